@@ -1,0 +1,42 @@
+#include "metrics/near_plane_metric.hpp"
+
+#include <algorithm>
+
+namespace fragsim {
+
+void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
+  const auto n = static_cast<std::size_t>(info.fragment_count);
+  prev_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) prev_[i] = sweep_end(initial.camera, initial.fragments[i]);
+  near_hit_.assign(n, 0);
+  body_hit_.assign(n, 0);
+  per_step_.clear();
+  per_step_.reserve(static_cast<std::size_t>(info.step_count));
+  fragment_steps_ = 0;
+}
+
+void NearPlaneMetric::observe(const StepSnapshot& snap) {
+  int count = 0;
+  for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
+    const SweepEnd now = sweep_end(snap.camera, snap.fragments[i]);
+    if (sweep_meets_near_rectangle(prev_[i], now)) {
+      ++count;
+      near_hit_[i] = 1;
+    }
+    if (!body_hit_[i] && sweep_meets_camera_body(prev_[i], now, snap.camera_body_half_m)) {
+      body_hit_[i] = 1;
+    }
+    prev_[i] = now;
+  }
+  for (int f : snap.camera_hits) body_hit_[static_cast<std::size_t>(f)] = 1;
+  per_step_.push_back(count);
+  fragment_steps_ += count;
+}
+
+void NearPlaneMetric::fill(RunSummary& s) const {
+  s.near_fragment_steps = fragment_steps_;
+  s.near_fragments = static_cast<int>(std::count(near_hit_.begin(), near_hit_.end(), 1));
+  s.camera_hit_fragments = static_cast<int>(std::count(body_hit_.begin(), body_hit_.end(), 1));
+}
+
+}  // namespace fragsim

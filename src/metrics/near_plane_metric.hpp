@@ -1,0 +1,34 @@
+#pragma once
+// Near-plane intersections and camera hits (METHOD.md section 6). A fragment intersects the near
+// plane in a step when its box meets the near rectangle at any time during the step's motion
+// (swept_box.hpp), tested with that step's near distance; a camera hit is a touch of the camera
+// body, reported by the physics' sensor or found by the same swept test.
+
+#include <vector>
+
+#include "metrics/run_summary.hpp"
+#include "metrics/swept_box.hpp"
+#include "sim/run_observer.hpp"
+
+namespace fragsim {
+
+class NearPlaneMetric final : public RunObserver {
+ public:
+  void begin(const RunInfo& info, const StepSnapshot& initial) override;
+  void observe(const StepSnapshot& snap) override;
+  void fill(RunSummary& summary) const;
+
+  // Fragments meeting the near rectangle in each step (index = step - 1).
+  const std::vector<int>& per_step() const { return per_step_; }
+  bool intersected(int fragment) const { return near_hit_[static_cast<std::size_t>(fragment)] != 0; }
+  bool camera_hit(int fragment) const { return body_hit_[static_cast<std::size_t>(fragment)] != 0; }
+
+ private:
+  std::vector<SweepEnd> prev_;
+  std::vector<char> near_hit_;
+  std::vector<char> body_hit_;
+  std::vector<int> per_step_;
+  int fragment_steps_ = 0;
+};
+
+}  // namespace fragsim

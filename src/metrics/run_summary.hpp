@@ -1,0 +1,65 @@
+#pragma once
+// One run's headline numbers: a row of the comparison table and of summary.csv. Each metric
+// observer fills its own fields.
+
+#include <cstdint>
+#include <string>
+
+namespace fragsim {
+
+struct RunSummary {
+  std::string scene;
+  std::string strategy;
+  std::uint64_t seed = 0;
+  double dt_s = 0.0;
+  int fragments = 0;
+  int steps = 0;
+
+  // Near-plane intersections (swept) and camera-body hits.
+  int near_fragment_steps = 0;
+  int near_fragments = 0;
+  int camera_hit_fragments = 0;
+
+  // Trajectory deviation against the `none` run of the same scene and seed (deviation_metric).
+  double deviation_mean_m = 0.0;  // mean over fragments of each one's largest deviation
+  double deviation_max_m = 0.0;   // largest deviation of any fragment
+  double deviated_share = 0.0;    // share of fragments moved more than 1 cm
+
+  // Screen occlusion (occlusion_metric): covered share of the viewport and of the central region.
+  double occlusion_mean = 0.0;
+  double occlusion_max = 0.0;
+  double central_occlusion_mean = 0.0;
+  double central_occlusion_max = 0.0;
+  double single_fragment_occlusion_max = 0.0;  // largest share covered by one fragment
+
+  // How fragments that were on screen left it (exit_metric), and near misses.
+  int exits_top = 0;
+  int exits_bottom = 0;
+  int exits_left = 0;
+  int exits_right = 0;
+  int exits_near = 0;    // through the near plane
+  int exits_stayed = 0;  // still on screen at the end
+  int near_misses = 0;   // passed within the near-miss distance without touching the near rectangle
+
+  // What the strategy did.
+  int candidates_initial = 0;  // after the prediction at t = 0
+  int candidates_max = 0;
+  int candidate_steps = 0;     // sum over steps
+  int capped_forces = 0;       // force-steps reduced by the acceleration cap
+  int guarded = 0;             // singular spots guarded (t_C - t -> 0, |P_pc| -> 0)
+  int forced_fragments = 0;    // fragments that got any force
+  double impulse_Ns = 0.0;     // sum of |F| dt over the run
+  double max_accel_mps2 = 0.0; // largest imposed acceleration
+  int wall_contacts = 0;       // contact points with the wall (wall)
+  double min_near_m = 0.0;     // smallest near distance used (near-plane: pulled in)
+  double depth_step_m = 0.0;   // depth resolution at the reference distance with min_near_m
+
+  // Cost.
+  double physics_ms_median = 0.0;
+  double physics_ms_p95 = 0.0;
+  double strategy_ms_median = 0.0;
+  double strategy_ms_p95 = 0.0;
+  double wall_s = 0.0;
+};
+
+}  // namespace fragsim

@@ -1,0 +1,52 @@
+#include "metrics/strategy_activity_metric.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "strategies/near_plane_strategy.hpp"
+
+namespace fragsim {
+
+void StrategyActivityMetric::begin(const RunInfo& info, const StepSnapshot&) {
+  dt_s_ = info.dt_s;
+  candidates_.clear();
+  near_m_.clear();
+  forced_.assign(static_cast<std::size_t>(info.fragment_count), 0);
+  capped_ = guarded_ = wall_contacts_ = 0;
+  impulse_Ns_ = max_accel_mps2_ = 0.0;
+}
+
+void StrategyActivityMetric::observe(const StepSnapshot& snap) {
+  candidates_.push_back(static_cast<int>(snap.candidates.size()));
+  near_m_.push_back(snap.camera.near_m);
+  capped_ += snap.capped;
+  guarded_ += snap.guarded;
+  wall_contacts_ += snap.wall_contacts;
+  for (const AppliedForce& f : snap.forces) {
+    const double force_N = f.force_N.norm();
+    impulse_Ns_ += force_N * dt_s_;
+    const auto i = static_cast<std::size_t>(f.fragment);
+    forced_[i] = 1;
+    max_accel_mps2_ = std::max(max_accel_mps2_, force_N / snap.fragments[i].mass_kg);
+  }
+}
+
+void StrategyActivityMetric::fill(RunSummary& s) const {
+  s.candidates_initial = candidates_.empty() ? 0 : candidates_.front();
+  s.candidates_max =
+      candidates_.empty() ? 0 : *std::max_element(candidates_.begin(), candidates_.end());
+  s.candidate_steps = std::accumulate(candidates_.begin(), candidates_.end(), 0);
+  s.capped_forces = capped_;
+  s.guarded = guarded_;
+  s.forced_fragments = static_cast<int>(std::count(forced_.begin(), forced_.end(), 1));
+  s.impulse_Ns = impulse_Ns_;
+  s.max_accel_mps2 = max_accel_mps2_;
+  s.wall_contacts = wall_contacts_;
+  s.min_near_m = near_m_.empty() ? 0.0 : *std::min_element(near_m_.begin(), near_m_.end());
+  s.depth_step_m =
+      s.min_near_m > 0.0
+          ? NearPlaneStrategy::depth_step_m(ref_distance_m_, s.min_near_m, depth_bits_)
+          : 0.0;
+}
+
+}  // namespace fragsim

@@ -1,0 +1,52 @@
+#pragma once
+// Swept overlap tests in camera coordinates. Between two snapshots a fragment's centre is taken to
+// move on the straight line between its camera-space positions, and its box is bounded by its
+// camera-aligned extents; every bound in the test is then linear in the step fraction s, so the
+// overlap interval is exact for that motion (a fast fragment cannot jump a thin target).
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "sim/camera_pose.hpp"
+#include "sim/fragment_state.hpp"
+
+namespace fragsim {
+
+// Half extents along the camera's right, up and forward axes of a fragment's (rotated) box.
+Eigen::Vector3d camera_aligned_extents(const CameraPose& camera, const FragmentState& f);
+
+// The sub-interval [s0, s1] of [0, 1] on which  a + b s <= 0  holds for every constraint added.
+class LinearInterval {
+ public:
+  // Keeps the part of the interval where a + b s <= 0.
+  void keep_nonpositive(double a, double b);
+  bool empty() const { return lo_ > hi_; }
+  double lo() const { return lo_; }
+  double hi() const { return hi_; }
+
+ private:
+  double lo_ = 0.0;
+  double hi_ = 1.0;
+};
+
+// One end of a sweep: the fragment's centre and extents in that snapshot's camera frame, and that
+// snapshot's near distance and near half sizes.
+struct SweepEnd {
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d extents_m = Eigen::Vector3d::Zero();
+  double near_m = 0.0;
+  double near_half_width_m = 0.0;
+  double near_half_height_m = 0.0;
+};
+
+SweepEnd sweep_end(const CameraPose& camera, const FragmentState& f);
+
+// The first step fraction at which the box meets the near rectangle, if it does.
+std::optional<double> sweep_meets_near_rectangle(const SweepEnd& a, const SweepEnd& b);
+
+// The first step fraction at which the box meets a camera-aligned box of half size body_half_m
+// centred on the eye, if it does.
+std::optional<double> sweep_meets_camera_body(const SweepEnd& a, const SweepEnd& b,
+                                              const Eigen::Vector3d& body_half_m);
+
+}  // namespace fragsim

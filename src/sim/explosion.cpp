@@ -1,0 +1,73 @@
+#include "sim/explosion.hpp"
+
+#include <cmath>
+
+#include "sim/camera_path.hpp"
+#include "sim/random.hpp"
+
+namespace fragsim {
+namespace {
+
+// A uniform random point in the unit ball, by rejection (the same sequence everywhere).
+Eigen::Vector3d unit_ball(Random& rng) {
+  for (;;) {
+    Eigen::Vector3d v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    if (v.squaredNorm() <= 1.0) return v;
+  }
+}
+
+// The ballistic velocity that takes a point from `from` to where the camera's eye will be when
+// it arrives, flying the straight-line distance at mean speed `speed_mps`. The arrival time is
+// found by fixed-point iteration (the camera is slower than the debris in any sensible scene; the
+// iteration count bounds it otherwise).
+Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraPath& camera,
+                               double speed_mps, const Eigen::Vector3d& gravity_mps2) {
+  if (speed_mps <= 0.0) return Eigen::Vector3d::Zero();
+  double flight_s = 0.0;
+  for (int i = 0; i < 32; ++i) flight_s = (camera.eye_at(flight_s) - from).norm() / speed_mps;
+  if (flight_s <= 0.0) return Eigen::Vector3d::Zero();
+  const Eigen::Vector3d d = camera.eye_at(flight_s) - from;
+  return d / flight_s - 0.5 * gravity_mps2 * flight_s;
+}
+
+}  // namespace
+
+std::vector<FragmentSpawn> explode(const Scene& scene) {
+  const ObjectDef& obj = scene.object;
+  const ExplosionDef& ex = scene.explosion;
+  const int n = obj.splits;
+  const double cell_m = obj.size_m / n;
+  const double half_m = 0.5 * cell_m * (1.0 - obj.gap);
+  const double mass_kg = obj.density_kgpm3 * std::pow(2.0 * half_m, 3);
+  const Eigen::Vector3d blast_m = obj.centre_m + ex.offset_m;
+  const Eigen::Vector3d aim_mps = aimed_velocity(obj.centre_m, CameraPath(scene.camera),
+                                                 ex.toward_camera_mps, scene.sim.gravity_mps2);
+
+  Random rng(scene.sim.seed);
+  std::vector<FragmentSpawn> out;
+  out.reserve(static_cast<std::size_t>(n) * n * n);
+  for (int iz = 0; iz < n; ++iz) {
+    for (int iy = 0; iy < n; ++iy) {
+      for (int ix = 0; ix < n; ++ix) {
+        FragmentSpawn f;
+        const Eigen::Vector3d local((ix + 0.5) * cell_m - 0.5 * obj.size_m,
+                                    (iy + 0.5) * cell_m - 0.5 * obj.size_m,
+                                    (iz + 0.5) * cell_m - 0.5 * obj.size_m);
+        f.position_m = obj.centre_m + local;
+        f.half_extents_m = Eigen::Vector3d::Constant(half_m);
+        f.mass_kg = mass_kg;
+        Eigen::Vector3d radial = f.position_m - blast_m;
+        // A fragment at the blast centre itself gets a random direction.
+        radial = radial.norm() > 1e-12 ? radial.normalized() : unit_ball(rng).normalized();
+        const double scale = 1.0 + ex.jitter * rng.uniform(-1.0, 1.0);
+        f.velocity_mps = scale * (ex.speed_mps * radial + aim_mps) +
+                         ex.jitter * ex.speed_mps * unit_ball(rng);
+        f.angular_velocity_radps = ex.spin_radps * unit_ball(rng);
+        out.push_back(f);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace fragsim

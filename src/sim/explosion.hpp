@@ -1,0 +1,23 @@
+#pragma once
+// Breaks the object into splits^3 boxes and gives each the velocity the blast leaves it with.
+
+#include <vector>
+
+#include "sim/fragment_state.hpp"
+#include "sim/scene.hpp"
+
+namespace fragsim {
+
+struct FragmentSpawn {
+  Eigen::Vector3d position_m;
+  Eigen::Vector3d velocity_mps;
+  Eigen::Vector3d angular_velocity_radps;
+  Eigen::Vector3d half_extents_m;
+  double mass_kg = 0.0;
+};
+
+// Deterministic for a given scene (seeded by scene.sim.seed). Fragments are ordered x fastest,
+// then y, then z, so fragment i is the same piece of the object in every run of the scene.
+std::vector<FragmentSpawn> explode(const Scene& scene);
+
+}  // namespace fragsim

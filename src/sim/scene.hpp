@@ -1,0 +1,86 @@
+#pragma once
+// Everything a run is made of, as plain settings structs with defaults and units. One Scene is
+// filled from a scene file and the command line (scene_file.hpp) and never changes during a run.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "strategies/strategy_params.hpp"
+
+namespace fragsim {
+
+struct SimulationDef {
+  double dt_s = 1.0 / 60.0;  // the thesis's step
+  double duration_s = 3.0;
+  std::uint64_t seed = 1;
+  bool fragment_collisions = false;  // off: no fragment pair is ever tested
+  Eigen::Vector3d gravity_mps2{0.0, -9.81, 0.0};
+  int solver_iterations = 20;  // dWorldQuickStep iterations
+};
+
+struct ObjectDef {
+  Eigen::Vector3d centre_m{0.0, 1.6, -8.0};
+  double size_m = 1.2;        // edge of the cube
+  int splits = 12;            // per axis: splits^3 fragments
+  double density_kgpm3 = 600.0;
+  double gap = 0.02;          // fragments are shrunk by this share so none touch at t = 0
+};
+
+struct ExplosionDef {
+  Eigen::Vector3d offset_m{0.0, 0.0, 0.0};  // blast centre relative to the object centre
+  double speed_mps = 5.0;           // radial speed away from the blast centre
+  double jitter = 0.3;              // relative random variation of each fragment's velocity
+  double spin_radps = 6.0;          // largest random angular speed
+  // Aims the blast: every fragment also gets the ballistic velocity that carries the object's
+  // centre to the moving camera's eye at this mean speed; 0 = an undirected explosion.
+  double toward_camera_mps = 0.0;
+};
+
+struct GroundDef {
+  bool enabled = true;
+  double height_m = 0.0;
+  double friction = 0.8;
+  double restitution = 0.2;
+};
+
+struct CameraDef {
+  // The camera moves along these points at speed_mps from t = 0 and stops at the last one.
+  std::vector<Eigen::Vector3d> waypoints_m{{0.0, 1.6, 0.0}, {0.0, 1.6, -4.0}};
+  Eigen::Vector3d look_at_m{0.0, 1.6, -8.0};
+  double speed_mps = 2.0;
+  double max_speed_mps = 3.0;  // V_c: the fastest the player can move the camera
+  double fovy_deg = 60.0;
+  double aspect = 16.0 / 9.0;
+  double near_m = 0.1;
+  double far_m = 500.0;
+  Eigen::Vector3d body_size_m{0.3, 0.2, 0.3};  // the camera's body, a box centred on the eye
+};
+
+// Settings of the metrics (they observe a run and never change it).
+struct MetricsDef {
+  int grid_width_px = 160;           // occlusion raster; its height follows the camera's aspect
+  double central_share = 0.5;        // the central region spans this share of width and height
+  double near_miss_m = 1.0;          // a pass this close to the eye, not touching, is a near miss
+  double deviation_threshold_m = 0.01;  // a fragment moved more than this "deviated"
+};
+
+struct Scene {
+  std::string name = "unnamed";
+  SimulationDef sim;
+  ObjectDef object;
+  ExplosionDef explosion;
+  GroundDef ground;
+  CameraDef camera;
+  WallParams wall;
+  DeflectAllParams deflect_all;
+  NearPlaneParams near_plane;
+  EdgeParams edge;
+  MetricsDef metrics;
+
+  int fragment_count() const { return object.splits * object.splits * object.splits; }
+  int step_count() const;
+};
+
+}  // namespace fragsim

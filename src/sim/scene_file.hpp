@@ -1,0 +1,47 @@
+#pragma once
+// Scene settings from a scene file (Boost.Program_options' INI syntax) and from the command line
+// (--section.key value): one table of keys serves both, with every key's unit, default and range.
+
+#include <boost/program_options/options_description.hpp>
+#include <boost/program_options/parsers.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/scene.hpp"
+
+namespace fragsim {
+
+// A bad scene file or setting. The message is one line naming file:line or --option, the key,
+// the value and what was expected.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Every scene key as a string-valued option, for the CLI's parser and its --help.
+const boost::program_options::options_description& scene_options();
+
+// A key set on the command line: the name without dashes, its value.
+struct SceneOverride {
+  std::string key;
+  std::string value;
+};
+
+// The scene keys among options parsed from a command line that included scene_options().
+std::vector<SceneOverride> scene_overrides(const boost::program_options::parsed_options& parsed);
+
+// Defaults, then the file (if `path` is not empty), then the overrides; validated as a whole.
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
+
+// The same from a string holding a scene file's text; `origin` names it in messages.
+Scene parse_scene(const std::string& text, const std::string& origin,
+                  const std::vector<SceneOverride>& overrides = {});
+
+// The fully resolved scene as a scene file: reading it back gives the same Scene bit for bit.
+std::string scene_to_ini(const Scene& scene);
+
+// Checks across keys (near < far, look_at off the path, ...). Throws SceneError.
+void validate_scene(const Scene& scene);
+
+}  // namespace fragsim

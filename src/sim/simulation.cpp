@@ -1,0 +1,102 @@
+#include "sim/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "sim/camera_path.hpp"
+#include "sim/explosion.hpp"
+#include "sim/world.hpp"
+
+namespace fragsim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+int Scene::step_count() const {
+  // The last step ends at or just past duration_s; the 1e-9 keeps 3 s / (1/60 s) at 180.
+  return static_cast<int>(std::ceil(sim.duration_s / sim.dt_s - 1e-9));
+}
+
+RunTotals simulate(const Scene& scene, Strategy& strategy,
+                   std::span<RunObserver* const> observers) {
+  const auto run_start = Clock::now();
+  const CameraPath path(scene.camera);
+  World world(scene, strategy.needs(), explode(scene));
+  std::vector<FragmentState> states = world.init_states();
+  strategy.reset(world.fragment_count());
+
+  const double dt = scene.sim.dt_s;
+  const int steps = scene.step_count();
+  const Eigen::Vector3d body_half = 0.5 * scene.camera.body_size_m;
+
+  StepSnapshot snap;
+  snap.step = 0;
+  snap.t_s = 0.0;
+  snap.camera = path.pose_at(0.0);
+  snap.camera_velocity_mps = path.velocity_at(0.0);
+  snap.camera_body_half_m = body_half;
+  snap.fragments = states;
+  const RunInfo info{&scene, strategy.name(), world.fragment_count(), steps, dt};
+  for (RunObserver* o : observers) o->begin(info, snap);
+
+  RunTotals totals;
+  StepOutput out;
+  for (int k = 0; k < steps; ++k) {
+    const double t = k * dt;
+    StepContext ctx;
+    ctx.step = k;
+    ctx.t_s = t;
+    ctx.dt_s = dt;
+    ctx.duration_s = scene.sim.duration_s;
+    ctx.camera = path.pose_at(t);
+    ctx.camera_velocity_mps = path.velocity_at(t);
+    ctx.camera_max_speed_mps = scene.camera.max_speed_mps;
+    ctx.camera_body_half_m = body_half;
+    ctx.gravity_mps2 = scene.sim.gravity_mps2;
+    ctx.ground_height_m = scene.ground.height_m;
+    ctx.fragments = states;
+
+    out.clear();
+    const auto strategy_start = Clock::now();
+    strategy.step(ctx, out);
+    const double strategy_s = seconds_since(strategy_start);
+
+    const auto physics_start = Clock::now();
+    world.set_camera(ctx.camera, ctx.camera_velocity_mps);
+    world.add_forces(out.forces);
+    world.step(dt);
+    world.read(states);
+    const double physics_s = seconds_since(physics_start);
+
+    totals.physics_s += physics_s;
+    totals.strategy_s += strategy_s;
+    ++totals.steps;
+
+    const double t_next = (k + 1) * dt;
+    snap.step = k + 1;
+    snap.t_s = t_next;
+    snap.camera = path.pose_at(t_next);
+    if (out.near_m) snap.camera.near_m = *out.near_m;
+    snap.camera_velocity_mps = path.velocity_at(t_next);
+    snap.fragments = states;
+    snap.forces = out.forces;
+    snap.candidates = out.candidates;
+    snap.capped = out.capped;
+    snap.guarded = out.guarded;
+    snap.camera_hits = world.camera_hits();
+    snap.wall_contacts = world.wall_contacts();
+    snap.physics_s = physics_s;
+    snap.strategy_s = strategy_s;
+    for (RunObserver* o : observers) o->observe(snap);
+  }
+  for (RunObserver* o : observers) o->end();
+  totals.wall_s = seconds_since(run_start);
+  return totals;
+}
+
+}  // namespace fragsim

@@ -1,0 +1,251 @@
+#include "sim/world.hpp"
+
+#include <ode/ode.h>
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+namespace fragsim {
+namespace {
+
+// ODE keeps process-wide state; initialise it once and close it at exit.
+struct OdeLibrary {
+  OdeLibrary() { dInitODE2(0); }
+  ~OdeLibrary() { dCloseODE(); }
+};
+void ensure_ode() { static OdeLibrary lib; }
+
+enum class GeomKind : int { kFragment, kGround, kCameraSensor, kWall };
+
+// What a geom is, reached through dGeomGetData.
+struct GeomTag {
+  GeomKind kind = GeomKind::kFragment;
+  int fragment = -1;
+};
+
+void set_pose(dBodyID body, const Eigen::Vector3d& pos, const Eigen::Matrix3d& rot) {
+  dMatrix3 r;  // ODE: 3x4 row-major
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) r[i * 4 + j] = rot(i, j);
+    r[i * 4 + 3] = 0.0;
+  }
+  dBodySetPosition(body, pos.x(), pos.y(), pos.z());
+  dBodySetRotation(body, r);
+}
+
+constexpr int kMaxContactsPerPair = 4;
+
+}  // namespace
+
+struct World::Impl {
+  dWorldID world = nullptr;
+  dSpaceID fragment_space = nullptr;
+  dSpaceID static_space = nullptr;
+  dJointGroupID contacts = nullptr;
+  std::vector<dBodyID> bodies;
+  std::vector<GeomTag> fragment_tags;  // stable addresses: sized once
+  GeomTag ground_tag{GeomKind::kGround, -1};
+  GeomTag sensor_tag{GeomKind::kCameraSensor, -1};
+  GeomTag wall_tag{GeomKind::kWall, -1};
+  dBodyID camera_body = nullptr;
+  dBodyID wall_body = nullptr;
+  std::optional<CameraWallSpec> wall;
+  std::vector<FragmentState> constant;  // extents, mass, radius
+  std::vector<char> touched;
+  std::vector<char> hit_flag;
+  std::vector<int> hits;
+  int wall_contact_count = 0;
+  bool fragment_collisions = false;
+  GroundDef ground;
+
+  static void near_callback(void* data, dGeomID a, dGeomID b) {
+    static_cast<Impl*>(data)->on_pair(a, b);
+  }
+
+  void on_pair(dGeomID a, dGeomID b) {
+    const auto* ta = static_cast<const GeomTag*>(dGeomGetData(a));
+    const auto* tb = static_cast<const GeomTag*>(dGeomGetData(b));
+    if (ta->kind != GeomKind::kFragment) {
+      std::swap(a, b);
+      std::swap(ta, tb);
+    }
+    if (ta->kind != GeomKind::kFragment) return;  // two static geoms: never
+    std::array<dContact, kMaxContactsPerPair> contact{};
+    if (tb->kind == GeomKind::kCameraSensor) {
+      // A sensor: record the touch, let the fragment pass through.
+      if (dCollide(a, b, 1, &contact[0].geom, sizeof(dContact)) > 0 && !hit_flag[ta->fragment]) {
+        hit_flag[ta->fragment] = 1;
+        hits.push_back(ta->fragment);
+      }
+      return;
+    }
+    const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
+    if (n == 0) return;
+    double bounce = ground.restitution;
+    double mu = ground.friction;
+    if (tb->kind == GeomKind::kWall) {
+      bounce = wall->restitution;
+      mu = 0.3;
+      wall_contact_count += n;
+    } else if (tb->kind == GeomKind::kFragment) {
+      touched[tb->fragment] = 1;
+    }
+    touched[ta->fragment] = 1;
+    for (int i = 0; i < n; ++i) {
+      dSurfaceParameters& s = contact[i].surface;
+      s.mode = dContactBounce | dContactApprox1;
+      s.mu = mu;
+      s.bounce = bounce;
+      s.bounce_vel = 0.1;
+      dJointID j = dJointCreateContact(world, contacts, &contact[i]);
+      dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
+    }
+  }
+};
+
+World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<FragmentSpawn>& spawns)
+    : impl_(std::make_unique<Impl>()) {
+  ensure_ode();
+  // QuickStep shuffles constraints with ODE's global generator: seed it for every world.
+  dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
+  Impl& w = *impl_;
+  w.fragment_collisions = scene.sim.fragment_collisions;
+  w.ground = scene.ground;
+  w.wall = needs.camera_wall;
+  w.world = dWorldCreate();
+  const Eigen::Vector3d& g = scene.sim.gravity_mps2;
+  dWorldSetGravity(w.world, g.x(), g.y(), g.z());
+  dWorldSetQuickStepNumIterations(w.world, scene.sim.solver_iterations);
+  dWorldSetContactSurfaceLayer(w.world, 0.001);
+  dWorldSetContactMaxCorrectingVel(w.world, 10.0);
+  // Fragments only ever collide through the fragment space; a simple space when pairs are never
+  // tested (it is only walked by dSpaceCollide2), sweep-and-prune when they are.
+  w.fragment_space = scene.sim.fragment_collisions
+                         ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XZY)
+                         : dSimpleSpaceCreate(nullptr);
+  w.static_space = dSimpleSpaceCreate(nullptr);
+  w.contacts = dJointGroupCreate(0);
+
+  const std::size_t n = spawns.size();
+  w.fragment_tags.resize(n);
+  w.bodies.reserve(n);
+  w.constant.resize(n);
+  w.touched.assign(n, 0);
+  w.hit_flag.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const FragmentSpawn& s = spawns[i];
+    dBodyID body = dBodyCreate(w.world);
+    dMass mass;
+    const Eigen::Vector3d size = 2.0 * s.half_extents_m;
+    dMassSetBoxTotal(&mass, s.mass_kg, size.x(), size.y(), size.z());
+    dBodySetMass(body, &mass);
+    dBodySetPosition(body, s.position_m.x(), s.position_m.y(), s.position_m.z());
+    dBodySetLinearVel(body, s.velocity_mps.x(), s.velocity_mps.y(), s.velocity_mps.z());
+    dBodySetAngularVel(body, s.angular_velocity_radps.x(), s.angular_velocity_radps.y(),
+                       s.angular_velocity_radps.z());
+    dGeomID geom = dCreateBox(w.fragment_space, size.x(), size.y(), size.z());
+    dGeomSetBody(geom, body);
+    w.fragment_tags[i] = GeomTag{GeomKind::kFragment, static_cast<int>(i)};
+    dGeomSetData(geom, &w.fragment_tags[i]);
+    w.bodies.push_back(body);
+    FragmentState& c = w.constant[i];
+    c.half_extents_m = s.half_extents_m;
+    c.mass_kg = s.mass_kg;
+    c.radius_m = s.half_extents_m.norm();
+  }
+
+  if (scene.ground.enabled) {
+    dGeomID plane = dCreatePlane(w.static_space, 0, 1, 0, scene.ground.height_m);
+    dGeomSetData(plane, &w.ground_tag);
+  }
+  const Eigen::Vector3d& body = scene.camera.body_size_m;
+  w.camera_body = dBodyCreate(w.world);
+  dBodySetKinematic(w.camera_body);
+  dGeomID sensor = dCreateBox(w.static_space, body.x(), body.y(), body.z());
+  dGeomSetBody(sensor, w.camera_body);
+  dGeomSetData(sensor, &w.sensor_tag);
+  if (w.wall) {
+    w.wall_body = dBodyCreate(w.world);
+    dBodySetKinematic(w.wall_body);
+    dGeomID wall = dCreateBox(w.static_space, w.wall->width_m, w.wall->height_m,
+                              w.wall->thickness_m);
+    dGeomSetBody(wall, w.wall_body);
+    dGeomSetData(wall, &w.wall_tag);
+  }
+}
+
+World::~World() {
+  Impl& w = *impl_;
+  dJointGroupDestroy(w.contacts);
+  dSpaceDestroy(w.fragment_space);  // destroys its geoms
+  dSpaceDestroy(w.static_space);
+  dWorldDestroy(w.world);  // destroys bodies and joints
+}
+
+int World::fragment_count() const { return static_cast<int>(impl_->bodies.size()); }
+
+std::vector<FragmentState> World::init_states() const {
+  std::vector<FragmentState> out = impl_->constant;
+  read(out);
+  return out;
+}
+
+void World::read(std::vector<FragmentState>& out) const {
+  const Impl& w = *impl_;
+  for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+    const dReal* p = dBodyGetPosition(w.bodies[i]);
+    const dReal* v = dBodyGetLinearVel(w.bodies[i]);
+    const dReal* r = dBodyGetRotation(w.bodies[i]);
+    FragmentState& s = out[i];
+    s.position_m = {p[0], p[1], p[2]};
+    s.velocity_mps = {v[0], v[1], v[2]};
+    s.rotation << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+    s.touched = w.touched[i] != 0;
+  }
+}
+
+void World::set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_mps) {
+  Impl& w = *impl_;
+  const Eigen::Matrix3d rot = pose.rotation();
+  set_pose(w.camera_body, pose.eye_m, rot);
+  dBodySetLinearVel(w.camera_body, velocity_mps.x(), velocity_mps.y(), velocity_mps.z());
+  if (w.wall_body) {
+    set_pose(w.wall_body, pose.eye_m + w.wall->distance_m * pose.forward, rot);
+    dBodySetLinearVel(w.wall_body, velocity_mps.x(), velocity_mps.y(), velocity_mps.z());
+  }
+}
+
+void World::add_forces(std::span<const AppliedForce> forces) {
+  for (const AppliedForce& f : forces) {
+    dBodyAddForce(impl_->bodies[static_cast<std::size_t>(f.fragment)], f.force_N.x(),
+                  f.force_N.y(), f.force_N.z());
+  }
+}
+
+void World::step(double dt_s) {
+  Impl& w = *impl_;
+  std::fill(w.touched.begin(), w.touched.end(), 0);
+  for (int i : w.hits) w.hit_flag[static_cast<std::size_t>(i)] = 0;
+  w.hits.clear();
+  w.wall_contact_count = 0;
+  dSpaceCollide2(reinterpret_cast<dGeomID>(w.fragment_space),
+                 reinterpret_cast<dGeomID>(w.static_space), &w, &Impl::near_callback);
+  if (w.fragment_collisions) dSpaceCollide(w.fragment_space, &w, &Impl::near_callback);
+  dWorldQuickStep(w.world, dt_s);
+  dJointGroupEmpty(w.contacts);
+  std::sort(w.hits.begin(), w.hits.end());
+}
+
+const std::vector<int>& World::camera_hits() const { return impl_->hits; }
+int World::wall_contacts() const { return impl_->wall_contact_count; }
+
+std::string World::ode_version() {
+#ifdef FRAGSIM_ODE_VERSION
+  return FRAGSIM_ODE_VERSION;
+#else
+  return "unknown";
+#endif
+}
+
+}  // namespace fragsim

@@ -1,0 +1,52 @@
+#pragma once
+// The physics world: the only place that knows about ODE. Fragments are dynamic boxes, the ground
+// a plane, the camera a kinematic body whose box is a sensor (touching it records a hit, nothing
+// bounces), and, when a strategy asks for one, a kinematic wall carried in front of the camera.
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/camera_pose.hpp"
+#include "sim/explosion.hpp"
+#include "sim/fragment_state.hpp"
+#include "sim/scene.hpp"
+#include "strategies/strategy.hpp"
+
+namespace fragsim {
+
+class World {
+ public:
+  World(const Scene& scene, const WorldNeeds& needs, const std::vector<FragmentSpawn>& spawns);
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  int fragment_count() const;
+  // Positions, velocities, rotations and last-step contact flags of every fragment; `out` must
+  // already hold the fragments' constant data (see init_states).
+  void read(std::vector<FragmentState>& out) const;
+  // Constant data (extents, mass, radius) plus the current state.
+  std::vector<FragmentState> init_states() const;
+
+  // Places the camera (and the wall, if any) for the coming step.
+  void set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_mps);
+  void add_forces(std::span<const AppliedForce> forces);
+  // Collision detection and one dWorldQuickStep.
+  void step(double dt_s);
+
+  // Fragments that touched the camera's sensor volume in the last step (each once, ascending).
+  const std::vector<int>& camera_hits() const;
+  // Contact points between fragments and the wall in the last step.
+  int wall_contacts() const;
+
+  // The version string of the ODE library, for reports.
+  static std::string ode_version();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fragsim

@@ -1,0 +1,21 @@
+#pragma once
+// `deflect-all`: every fragment approaching the camera within range is pushed away from the view
+// axis, with no prediction and no choice of edge (thesis fig. 2.2).
+
+#include "strategies/strategy.hpp"
+#include "strategies/strategy_params.hpp"
+
+namespace fragsim {
+
+class DeflectAllStrategy final : public Strategy {
+ public:
+  explicit DeflectAllStrategy(const DeflectAllParams& params) : params_(params) {}
+  std::string name() const override { return "deflect-all"; }
+  void reset(int) override {}
+  void step(const StepContext& ctx, StepOutput& out) override;
+
+ private:
+  DeflectAllParams params_;
+};
+
+}  // namespace fragsim

@@ -1,0 +1,31 @@
+#pragma once
+// `edge`: the thesis's method (METHOD.md section 3). At t = 0 every fragment's ballistic path is
+// tested against the ball the camera can reach before the fragment lands; only the fragments that
+// pass (the candidates) are examined in later steps, each getting the force (3.4) toward the
+// near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
+// candidate.
+
+#include <vector>
+
+#include "strategies/collision_prediction.hpp"
+#include "strategies/strategy.hpp"
+#include "strategies/strategy_params.hpp"
+
+namespace fragsim {
+
+class EdgeStrategy final : public Strategy {
+ public:
+  explicit EdgeStrategy(const EdgeParams& params) : params_(params) {}
+  std::string name() const override { return "edge"; }
+  void reset(int fragment_count) override;
+  void step(const StepContext& ctx, StepOutput& out) override;
+
+ private:
+  bool should_examine(const StepContext& ctx, std::size_t i) const;
+
+  EdgeParams params_;
+  std::vector<char> candidate_;  // examined again next step
+  std::vector<char> pushed_;     // got a force in the last step
+};
+
+}  // namespace fragsim

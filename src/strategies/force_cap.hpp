@@ -1,0 +1,33 @@
+#pragma once
+// The acceleration cap every force-applying strategy goes through: no imposed acceleration above
+// a_max, and no non-finite force ever reaches the physics.
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "strategies/strategy.hpp"
+
+namespace fragsim {
+
+// Adds `force_N` on `fragment` to `out`, scaled down to mass_kg * a_max_mps2 if above; counts the
+// cap in out.capped. A non-finite force (a singular spot that escaped its guard) is dropped and
+// counted in out.guarded.
+inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& force_N,
+                         double mass_kg, double a_max_mps2) {
+  if (!force_N.allFinite()) {
+    ++out.guarded;
+    return;
+  }
+  const double limit_N = mass_kg * a_max_mps2;
+  const double norm_N = force_N.norm();
+  if (norm_N == 0.0) return;
+  if (norm_N > limit_N) {
+    ++out.capped;
+    if (limit_N <= 0.0) return;
+    out.forces.push_back({fragment, force_N * (limit_N / norm_N)});
+    return;
+  }
+  out.forces.push_back({fragment, force_N});
+}
+
+}  // namespace fragsim

@@ -1,0 +1,72 @@
+#pragma once
+// The strategy interface: what stands between the explosion and the camera. A strategy sees the
+// world through StepContext (read-only) and answers through StepOutput; the simulation applies the
+// answer. Parameters are fixed at construction; reset() clears the run state so a rerun is
+// reproducible.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "sim/camera_pose.hpp"
+#include "sim/fragment_state.hpp"
+
+namespace fragsim {
+
+struct StepContext {
+  int step = 0;         // index of the step about to be taken
+  double t_s = 0.0;     // time at the start of the step; 0 is the explosion
+  double dt_s = 0.0;
+  double duration_s = 0.0;
+  CameraPose camera;                               // as rendered now (scene near distance)
+  Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();
+  double camera_max_speed_mps = 0.0;               // V_c
+  Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
+  double ground_height_m = 0.0;
+  std::span<const FragmentState> fragments;
+};
+
+struct StepOutput {
+  std::vector<AppliedForce> forces;  // at most one entry per fragment
+  std::vector<int> candidates;       // fragments the strategy considers threatening (edge)
+  std::optional<double> near_m;      // a near distance other than the scene's (near-plane)
+  int capped = 0;                    // forces the acceleration cap reduced this step
+  int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
+
+  void clear() {
+    forces.clear();
+    candidates.clear();
+    near_m.reset();
+    capped = 0;
+    guarded = 0;
+  }
+};
+
+// A kinematic box the simulation must carry in front of the camera (the `wall` strategy).
+struct CameraWallSpec {
+  double distance_m = 0.0;  // centre of the box along the view direction
+  double width_m = 0.0;
+  double height_m = 0.0;
+  double thickness_m = 0.0;
+  double restitution = 0.0;
+};
+
+// What a strategy needs the world to contain besides fragments, ground and camera.
+struct WorldNeeds {
+  std::optional<CameraWallSpec> camera_wall;
+};
+
+class Strategy {
+ public:
+  virtual ~Strategy() = default;
+  virtual std::string name() const = 0;
+  virtual WorldNeeds needs() const { return {}; }
+  // Called before the first step of every run.
+  virtual void reset(int fragment_count) = 0;
+  // Called once per step, before the physics step; `out` arrives cleared.
+  virtual void step(const StepContext& ctx, StepOutput& out) = 0;
+};
+
+}  // namespace fragsim

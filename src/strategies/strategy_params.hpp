@@ -1,0 +1,55 @@
+#pragma once
+// Parameters of each strategy, one plain struct per strategy with defaults and units. They are
+// filled from the scene file's section of the same name ([edge], [wall], ...) and are const for
+// the length of a run.
+
+#include <string>
+
+namespace fragsim {
+
+// Which ballistic path the prediction uses.
+enum class Predictor {
+  kThesis,    // (3.1) with the velocity read from the physics.
+  kDiscrete,  // ODE's semi-implicit Euler: the parabola with velocity V + g dt/2.
+};
+// Which region the camera can reach before the fragment lands.
+enum class Reach {
+  kThesis,   // The fixed ball |X - P_c(t_now)| = V_c (t_G - t_now), plus both radii.
+  kGrowing,  // The ball V_c (t - t_now) + radii that grows with time.
+};
+// Height at which the fragment is taken to "reach the ground" (t_G).
+enum class Horizon { kCamera, kGround };
+// Which non-candidates are examined again after t = 0.
+enum class Replan { kNever, kContact, kAlways };
+
+struct NoneParams {};
+
+struct WallParams {
+  double distance_m = 0.6;       // from the eye along the view direction
+  double thickness_m = 0.05;     // depth of the box
+  double margin = 1.25;          // wall size over the frustum's cross-section at distance_m
+  double restitution = 0.3;      // bounce of fragments off the wall
+};
+
+struct DeflectAllParams {
+  double accel_mps2 = 60.0;   // push away from the view axis, per unit mass
+  double range_m = 6.0;       // only fragments closer than this to the eye are pushed
+};
+
+struct NearPlaneParams {
+  double min_near_m = 0.01;      // the near plane never comes closer than this
+  double margin_m = 0.02;        // kept between the near plane and the nearest fragment
+  int depth_bits = 24;           // depth buffer precision, for the depth-step report
+  double ref_distance_m = 10.0;  // distance at which the depth step is reported
+};
+
+struct EdgeParams {
+  double k = 40.0;                // gain of (3.4), N s m
+  double a_max_mps2 = 400.0;      // cap on the imposed acceleration
+  Predictor predictor = Predictor::kThesis;
+  Reach reach = Reach::kThesis;
+  Horizon horizon = Horizon::kCamera;
+  Replan replan = Replan::kNever;
+};
+
+}  // namespace fragsim

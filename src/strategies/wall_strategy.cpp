@@ -1,0 +1,23 @@
+#include "strategies/wall_strategy.hpp"
+
+#include <cmath>
+
+namespace fragsim {
+
+WallStrategy::WallStrategy(const WallParams& params, const CameraDef& camera) {
+  // Sized to the frustum's cross-section at the wall's far face, so no fragment reaches the near
+  // plane around its rim.
+  CameraPose frustum;
+  frustum.fovy_deg = camera.fovy_deg;
+  frustum.aspect = camera.aspect;
+  const double far_face_m = params.distance_m + 0.5 * params.thickness_m;
+  spec_.distance_m = params.distance_m;
+  spec_.thickness_m = params.thickness_m;
+  spec_.width_m = 2.0 * params.margin * frustum.half_width_at(far_face_m);
+  spec_.height_m = 2.0 * params.margin * frustum.half_height_at(far_face_m);
+  spec_.restitution = params.restitution;
+}
+
+WorldNeeds WallStrategy::needs() const { return WorldNeeds{spec_}; }
+
+}  // namespace fragsim

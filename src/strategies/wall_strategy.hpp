@@ -1,0 +1,22 @@
+#pragma once
+// `wall`: a transparent kinematic box carried in front of the camera that fragments bounce off
+// (thesis fig. 2.1). The strategy itself applies no force; the wall lives in the physics world.
+
+#include "sim/scene.hpp"
+#include "strategies/strategy.hpp"
+
+namespace fragsim {
+
+class WallStrategy final : public Strategy {
+ public:
+  WallStrategy(const WallParams& params, const CameraDef& camera);
+  std::string name() const override { return "wall"; }
+  WorldNeeds needs() const override;
+  void reset(int) override {}
+  void step(const StepContext&, StepOutput&) override {}
+
+ private:
+  CameraWallSpec spec_;
+};
+
+}  // namespace fragsim
