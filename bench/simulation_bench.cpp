@@ -1,5 +1,6 @@
 // Whole runs of the default scene per strategy, and the prediction at t = 0 per fragment.
-// Run: build/release/bench/fragsim_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
+// Run: build/release/bench/fragsim_bench --benchmark_repetitions=5
+// --benchmark_report_aggregates_only
 
 #include <benchmark/benchmark.h>
 

@@ -19,9 +19,9 @@ void CostMetric::observe(const StepSnapshot& snap) {
 
 double CostMetric::quantile(std::vector<double> sample, double q) {
   if (sample.empty()) return 0.0;
-  const auto rank = static_cast<std::size_t>(
-      std::clamp(std::ceil(q * static_cast<double>(sample.size())) - 1.0, 0.0,
-                 static_cast<double>(sample.size() - 1)));
+  const auto rank =
+      static_cast<std::size_t>(std::clamp(std::ceil(q * static_cast<double>(sample.size())) - 1.0,
+                                          0.0, static_cast<double>(sample.size() - 1)));
   std::nth_element(sample.begin(), sample.begin() + static_cast<std::ptrdiff_t>(rank),
                    sample.end());
   return sample[rank];

@@ -1,21 +1,39 @@
 #include "metrics/evaluation.hpp"
 
-#include <array>
+#include <tuple>
 
+#include "metrics/camera_track.hpp"
 #include "metrics/cost_metric.hpp"
+#include "metrics/deviation_metric.hpp"
+#include "metrics/exit_metric.hpp"
 #include "metrics/near_plane_metric.hpp"
+#include "metrics/occlusion_metric.hpp"
 #include "metrics/strategy_activity_metric.hpp"
+#include "metrics/trajectory_record.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/registry.hpp"
 
 namespace fragsim {
 
-Evaluation evaluate(const Scene& scene, const std::string& strategy_name) {
+Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
+                    const EvaluationOptions& options) {
   auto strategy = make_strategy(strategy_name, scene);
   NearPlaneMetric near;
   StrategyActivityMetric activity(scene.near_plane.depth_bits, scene.near_plane.ref_distance_m);
   CostMetric cost;
-  const std::array<RunObserver*, 3> observers{&near, &activity, &cost};
+  ExitMetric exits(scene.metrics);
+  CameraTrack camera;
+  std::vector<RunObserver*> observers{&near, &activity, &cost, &exits, &camera};
+  std::optional<OcclusionMetric> occlusion;
+  if (options.occlusion) observers.push_back(&occlusion.emplace(scene.metrics));
+  std::optional<DeviationMetric> deviation;
+  if (options.reference) {
+    observers.push_back(
+        &deviation.emplace(*options.reference, scene.metrics.deviation_threshold_m));
+  }
+  if (options.record) observers.push_back(options.record);
+  observers.insert(observers.end(), options.extra.begin(), options.extra.end());
+
   const RunTotals totals = simulate(scene, *strategy, observers);
 
   Evaluation e;
@@ -30,10 +48,68 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name) {
   near.fill(s);
   activity.fill(s);
   cost.fill(s);
+  exits.fill(s);
   e.near_per_step = near.per_step();
   e.candidates_per_step = activity.candidates_per_step();
-  e.near_m_per_step = activity.near_per_step_m();
+  e.physics_s_per_step = cost.physics_s();
+  e.strategy_s_per_step = cost.strategy_s();
+  e.camera = camera.poses();
+  if (occlusion) {
+    occlusion->fill(s);
+    e.occlusion_per_step = occlusion->viewport_share_per_step();
+    e.central_occlusion_per_step = occlusion->central_share_per_step();
+  }
+  if (deviation) {
+    deviation->fill(s);
+    e.has_deviation = true;
+  }
   return e;
+}
+
+std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
+                                bool occlusion, RunObserver* extra) {
+  for (const std::string& name : strategies) make_strategy(name, scene);  // validate all first
+  TrajectoryRecord reference;
+  EvaluationOptions ref_opts;
+  ref_opts.record = &reference;
+  ref_opts.occlusion = occlusion;
+  bool none_named = false;
+  for (const std::string& n : strategies) none_named = none_named || n == "none";
+  if (none_named && extra) ref_opts.extra.push_back(extra);
+  Evaluation none = evaluate(scene, "none", ref_opts);
+
+  std::vector<Evaluation> runs;
+  EvaluationOptions opts;
+  opts.reference = &reference;
+  opts.occlusion = occlusion;
+  if (extra) opts.extra.push_back(extra);
+  for (const std::string& name : strategies) {
+    if (name == "none") {
+      // Deviation of the reference from itself is zero by definition.
+      none.has_deviation = true;
+      runs.push_back(none);
+    } else {
+      runs.push_back(evaluate(scene, name, opts));
+    }
+  }
+  return runs;
+}
+
+std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs) {
+  std::optional<std::size_t> best;
+  auto key = [](const RunSummary& s) {
+    return std::make_tuple(s.near_fragments + s.camera_hit_fragments, s.deviation_mean_m,
+                           -s.near_misses);
+  };
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (runs[i].summary.strategy == "none") continue;
+    if (!best || key(runs[i].summary) < key(runs[*best].summary)) best = i;
+  }
+  return best;
+}
+
+bool z_fighting(const RunSummary& s, double ref_distance_m) {
+  return s.depth_step_m > 1e-3 * ref_distance_m;
 }
 
 }  // namespace fragsim

@@ -1,22 +1,55 @@
 #pragma once
-// Runs one strategy on a scene with the metric observers attached and gathers its summary. The
-// comparison is a list of these on the same scene and seed.
+// Runs strategies on a scene with the metric observers attached and gathers their summaries and
+// per-step series. A comparison runs `none` first: its trajectories are the reference every other
+// strategy's deviation is measured against.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "metrics/run_summary.hpp"
+#include "sim/camera_pose.hpp"
+#include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {
 
-struct Evaluation {
-  RunSummary summary;
-  std::vector<int> near_per_step;
-  std::vector<int> candidates_per_step;
-  std::vector<double> near_m_per_step;
+class TrajectoryRecord;
+
+struct EvaluationOptions {
+  const TrajectoryRecord* reference = nullptr;  // the `none` run, for deviation; null: no deviation
+  TrajectoryRecord* record = nullptr;           // filled with this run's trajectories if set
+  bool occlusion = true;                        // rasterise the screen every step
+  std::vector<RunObserver*> extra;              // more observers (a trajectory writer, ...)
 };
 
-Evaluation evaluate(const Scene& scene, const std::string& strategy);
+struct Evaluation {
+  RunSummary summary;
+  bool has_deviation = false;
+  // Per-step series, index = step - 1.
+  std::vector<int> near_per_step;
+  std::vector<int> candidates_per_step;
+  std::vector<double> occlusion_per_step;
+  std::vector<double> central_occlusion_per_step;
+  std::vector<double> physics_s_per_step;
+  std::vector<double> strategy_s_per_step;
+  std::vector<CameraPose> camera;  // index = step (0 = the explosion)
+};
+
+Evaluation evaluate(const Scene& scene, const std::string& strategy,
+                    const EvaluationOptions& options = {});
+
+// Every named strategy on the same scene and seed, in the given order; `none` is run first as
+// the deviation reference whether named or not (and reported only if named). Unknown names and
+// bad parameters throw std::invalid_argument before anything runs.
+std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
+                                bool occlusion = true, RunObserver* extra = nullptr);
+
+// The thesis's goals, in order: no near-plane intersections or camera hits, then least mean
+// deviation, then most near misses. The best of the runs other than `none`; nullopt if none.
+std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs);
+
+// The z-fighting flag: the depth step at the reference distance exceeds 1e-3 of that distance.
+bool z_fighting(const RunSummary& summary, double ref_distance_m);
 
 }  // namespace fragsim

@@ -20,7 +20,9 @@ class NearPlaneMetric final : public RunObserver {
 
   // Fragments meeting the near rectangle in each step (index = step - 1).
   const std::vector<int>& per_step() const { return per_step_; }
-  bool intersected(int fragment) const { return near_hit_[static_cast<std::size_t>(fragment)] != 0; }
+  bool intersected(int fragment) const {
+    return near_hit_[static_cast<std::size_t>(fragment)] != 0;
+  }
   bool camera_hit(int fragment) const { return body_hit_[static_cast<std::size_t>(fragment)] != 0; }
 
  private:

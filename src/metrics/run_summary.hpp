@@ -44,15 +44,15 @@ struct RunSummary {
   // What the strategy did.
   int candidates_initial = 0;  // after the prediction at t = 0
   int candidates_max = 0;
-  int candidate_steps = 0;     // sum over steps
-  int capped_forces = 0;       // force-steps reduced by the acceleration cap
-  int guarded = 0;             // singular spots guarded (t_C - t -> 0, |P_pc| -> 0)
-  int forced_fragments = 0;    // fragments that got any force
-  double impulse_Ns = 0.0;     // sum of |F| dt over the run
-  double max_accel_mps2 = 0.0; // largest imposed acceleration
-  int wall_contacts = 0;       // contact points with the wall (wall)
-  double min_near_m = 0.0;     // smallest near distance used (near-plane: pulled in)
-  double depth_step_m = 0.0;   // depth resolution at the reference distance with min_near_m
+  int candidate_steps = 0;      // sum over steps
+  int capped_forces = 0;        // force-steps reduced by the acceleration cap
+  int guarded = 0;              // singular spots guarded (t_C - t -> 0, |P_pc| -> 0)
+  int forced_fragments = 0;     // fragments that got any force
+  double impulse_Ns = 0.0;      // sum of |F| dt over the run
+  double max_accel_mps2 = 0.0;  // largest imposed acceleration
+  int wall_contacts = 0;        // contact points with the wall (wall)
+  double min_near_m = 0.0;      // smallest near distance used (near-plane: pulled in)
+  double depth_step_m = 0.0;    // depth resolution at the reference distance with min_near_m
 
   // Cost.
   double physics_ms_median = 0.0;

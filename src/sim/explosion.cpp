@@ -60,8 +60,8 @@ std::vector<FragmentSpawn> explode(const Scene& scene) {
         // A fragment at the blast centre itself gets a random direction.
         radial = radial.norm() > 1e-12 ? radial.normalized() : unit_ball(rng).normalized();
         const double scale = 1.0 + ex.jitter * rng.uniform(-1.0, 1.0);
-        f.velocity_mps = scale * (ex.speed_mps * radial + aim_mps) +
-                         ex.jitter * ex.speed_mps * unit_ball(rng);
+        f.velocity_mps =
+            scale * (ex.speed_mps * radial + aim_mps) + ex.jitter * ex.speed_mps * unit_ball(rng);
         f.angular_velocity_radps = ex.spin_radps * unit_ball(rng);
         out.push_back(f);
       }

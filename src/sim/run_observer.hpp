@@ -15,7 +15,7 @@ struct Scene;
 
 // The state after a step (or, for step 0, right after the explosion).
 struct StepSnapshot {
-  int step = 0;      // 0 = the explosion; step k is the state at t = k dt
+  int step = 0;  // 0 = the explosion; step k is the state at t = k dt
   double t_s = 0.0;
   CameraPose camera;  // as rendered at t_s, with the near distance in force then
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();

@@ -11,28 +11,44 @@
 
 namespace fragsim {
 
+// Which ODE stepper advances the world.
+enum class Solver {
+  kAuto,   // exact when fragments do not collide with each other, quick when they do
+  kExact,  // dWorldStep: the exact LCP solver, per island
+  kQuick,  // dWorldQuickStep: iterative, with constraints shuffled by ODE's global generator
+};
+
 struct SimulationDef {
   double dt_s = 1.0 / 60.0;  // the thesis's step
   double duration_s = 3.0;
   std::uint64_t seed = 1;
   bool fragment_collisions = false;  // off: no fragment pair is ever tested
   Eigen::Vector3d gravity_mps2{0.0, -9.81, 0.0};
+  Solver solver = Solver::kAuto;
   int solver_iterations = 20;  // dWorldQuickStep iterations
+
+  // Without fragment-fragment contacts every island is one fragment and its few contacts, where
+  // the exact solver is cheap. It also keeps islands independent: QuickStep draws its constraint
+  // shuffle from one global generator, so a push on one fragment would change how every other
+  // fragment's ground contacts are solved, and show up as deviation the strategy did not cause.
+  bool uses_exact_solver() const {
+    return solver == Solver::kExact || (solver == Solver::kAuto && !fragment_collisions);
+  }
 };
 
 struct ObjectDef {
   Eigen::Vector3d centre_m{0.0, 1.6, -8.0};
-  double size_m = 1.2;        // edge of the cube
-  int splits = 12;            // per axis: splits^3 fragments
+  double size_m = 1.2;  // edge of the cube
+  int splits = 12;      // per axis: splits^3 fragments
   double density_kgpm3 = 600.0;
-  double gap = 0.02;          // fragments are shrunk by this share so none touch at t = 0
+  double gap = 0.02;  // fragments are shrunk by this share so none touch at t = 0
 };
 
 struct ExplosionDef {
   Eigen::Vector3d offset_m{0.0, 0.0, 0.0};  // blast centre relative to the object centre
-  double speed_mps = 5.0;           // radial speed away from the blast centre
-  double jitter = 0.3;              // relative random variation of each fragment's velocity
-  double spin_radps = 6.0;          // largest random angular speed
+  double speed_mps = 5.0;                   // radial speed away from the blast centre
+  double jitter = 0.3;                      // relative random variation of each fragment's velocity
+  double spin_radps = 6.0;                  // largest random angular speed
   // Aims the blast: every fragment also gets the ballistic velocity that carries the object's
   // centre to the moving camera's eye at this mean speed; 0 = an undirected explosion.
   double toward_camera_mps = 0.0;
@@ -60,9 +76,9 @@ struct CameraDef {
 
 // Settings of the metrics (they observe a run and never change it).
 struct MetricsDef {
-  int grid_width_px = 160;           // occlusion raster; its height follows the camera's aspect
-  double central_share = 0.5;        // the central region spans this share of width and height
-  double near_miss_m = 1.0;          // a pass this close to the eye, not touching, is a near miss
+  int grid_width_px = 160;     // occlusion raster; its height follows the camera's aspect
+  double central_share = 0.5;  // the central region spans this share of width and height
+  double near_miss_m = 1.0;    // a pass this close to the eye, not touching, is a near miss
   double deviation_threshold_m = 0.01;  // a fragment moved more than this "deviated"
 };
 

@@ -1,5 +1,7 @@
 #include "sim/scene_file.hpp"
 
+#include "sim/number_format.hpp"
+
 #include <boost/program_options/errors.hpp>
 #include <boost/program_options/value_semantic.hpp>
 #include <charconv>
@@ -32,13 +34,6 @@ std::string trim(const std::string& s) {
   if (b == std::string::npos) return "";
   const auto e = s.find_last_not_of(" \t\r\n");
   return s.substr(b, e - b + 1);
-}
-
-// Shortest text that reads back as the same double.
-std::string format_double(double v) {
-  char buf[64];
-  auto res = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, res.ptr);
 }
 
 double parse_double(const std::string& text) {
@@ -94,17 +89,25 @@ struct Range {
     return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
   }
   std::string text() const {
-    if (std::isinf(hi)) return std::string(lo_open ? "must be > " : "must be >= ") + format_double(lo);
-    if (std::isinf(lo)) return std::string(hi_open ? "must be < " : "must be <= ") + format_double(hi);
+    if (std::isinf(hi))
+      return std::string(lo_open ? "must be > " : "must be >= ") + format_double(lo);
+    if (std::isinf(lo))
+      return std::string(hi_open ? "must be < " : "must be <= ") + format_double(hi);
     return "must be in " + std::string(lo_open ? "(" : "[") + format_double(lo) + ", " +
            format_double(hi) + (hi_open ? ")" : "]");
   }
 };
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-Range closed(double lo, double hi) { return {lo, hi, false, false}; }
-Range open_closed(double lo, double hi) { return {lo, hi, true, false}; }
-Range open(double lo, double hi) { return {lo, hi, true, true}; }
+Range closed(double lo, double hi) {
+  return {lo, hi, false, false};
+}
+Range open_closed(double lo, double hi) {
+  return {lo, hi, true, false};
+}
+Range open(double lo, double hi) {
+  return {lo, hi, true, true};
+}
 
 template <typename Get>
 KeySpec real(std::string name, std::string help, Get field, Range range) {
@@ -133,18 +136,19 @@ KeySpec integer(std::string name, std::string help, Get field, long long lo, lon
 
 template <typename Get>
 KeySpec boolean(std::string name, std::string help, Get field) {
-  return {std::move(name), std::move(help),
-          [field](Scene& s, const std::string& text) {
-            const std::string v = trim(text);
-            if (v == "on" || v == "true" || v == "yes" || v == "1") {
-              field(s) = true;
-            } else if (v == "off" || v == "false" || v == "no" || v == "0") {
-              field(s) = false;
-            } else {
-              throw ValueError{"expected on or off"};
-            }
-          },
-          [field](const Scene& s) { return std::string(field(const_cast<Scene&>(s)) ? "on" : "off"); }};
+  return {
+      std::move(name), std::move(help),
+      [field](Scene& s, const std::string& text) {
+        const std::string v = trim(text);
+        if (v == "on" || v == "true" || v == "yes" || v == "1") {
+          field(s) = true;
+        } else if (v == "off" || v == "false" || v == "no" || v == "0") {
+          field(s) = false;
+        } else {
+          throw ValueError{"expected on or off"};
+        }
+      },
+      [field](const Scene& s) { return std::string(field(const_cast<Scene&>(s)) ? "on" : "off"); }};
 }
 
 template <typename Get>
@@ -229,10 +233,12 @@ const std::vector<KeySpec>& keys() {
                  },
                  [](const Scene& s) { return s.name; }});
     // [simulation]
-    t.push_back(real("simulation.dt_s", "s; physics step",
-                     [](Scene& s) -> double& { return s.sim.dt_s; }, open_closed(0, 1)));
-    t.push_back(real("simulation.duration_s", "s; simulated time after the explosion",
-                     [](Scene& s) -> double& { return s.sim.duration_s; }, open_closed(0, 3600)));
+    t.push_back(real(
+        "simulation.dt_s", "s; physics step", [](Scene& s) -> double& { return s.sim.dt_s; },
+        open_closed(0, 1)));
+    t.push_back(real(
+        "simulation.duration_s", "s; simulated time after the explosion",
+        [](Scene& s) -> double& { return s.sim.duration_s; }, open_closed(0, 3600)));
     t.push_back({"simulation.seed", "random seed of the explosion and of ODE's solver",
                  [](Scene& s, const std::string& v) {
                    const std::string x = trim(v);
@@ -247,126 +253,158 @@ const std::vector<KeySpec>& keys() {
     t.push_back(boolean("simulation.fragment_collisions",
                         "on|off; fragments collide with each other (off: no pair is tested)",
                         [](Scene& s) -> bool& { return s.sim.fragment_collisions; }));
-    t.push_back(vec3("simulation.gravity_mps2", "m/s^2; gravity vector",
-                     [](Scene& s) -> Eigen::Vector3d& { return s.sim.gravity_mps2; },
-                     closed(-1000, 1000)));
-    t.push_back(integer("simulation.solver_iterations", "dWorldQuickStep iterations",
-                        [](Scene& s) -> int& { return s.sim.solver_iterations; }, 1, 1000));
+    t.push_back(vec3(
+        "simulation.gravity_mps2", "m/s^2; gravity vector",
+        [](Scene& s) -> Eigen::Vector3d& { return s.sim.gravity_mps2; }, closed(-1000, 1000)));
+    t.push_back(choice<Solver>(
+        "simulation.solver",
+        "auto | exact | quick; ODE stepper (auto: exact without fragment collisions, else quick)",
+        [](Scene& s) -> Solver& { return s.sim.solver; },
+        {{"auto", Solver::kAuto}, {"exact", Solver::kExact}, {"quick", Solver::kQuick}}));
+    t.push_back(integer(
+        "simulation.solver_iterations", "dWorldQuickStep iterations",
+        [](Scene& s) -> int& { return s.sim.solver_iterations; }, 1, 1000));
     // [object]
-    t.push_back(vec3("object.centre_m", "m; centre of the cube",
-                     [](Scene& s) -> Eigen::Vector3d& { return s.object.centre_m; },
-                     closed(-1e6, 1e6)));
-    t.push_back(real("object.size_m", "m; edge of the cube",
-                     [](Scene& s) -> double& { return s.object.size_m; }, open_closed(0, 1000)));
-    t.push_back(integer("object.splits", "pieces per axis; splits^3 fragments",
-                        [](Scene& s) -> int& { return s.object.splits; }, 1, 64));
-    t.push_back(real("object.density_kgpm3", "kg/m^3",
-                     [](Scene& s) -> double& { return s.object.density_kgpm3; },
-                     open_closed(0, 1e5)));
-    t.push_back(real("object.gap", "share by which each fragment is shrunk, so none touch at t = 0",
-                     [](Scene& s) -> double& { return s.object.gap; }, closed(0, 0.5)));
+    t.push_back(vec3(
+        "object.centre_m", "m; centre of the cube",
+        [](Scene& s) -> Eigen::Vector3d& { return s.object.centre_m; }, closed(-1e6, 1e6)));
+    t.push_back(real(
+        "object.size_m", "m; edge of the cube", [](Scene& s) -> double& { return s.object.size_m; },
+        open_closed(0, 1000)));
+    t.push_back(integer(
+        "object.splits", "pieces per axis; splits^3 fragments",
+        [](Scene& s) -> int& { return s.object.splits; }, 1, 64));
+    t.push_back(real(
+        "object.density_kgpm3", "kg/m^3",
+        [](Scene& s) -> double& { return s.object.density_kgpm3; }, open_closed(0, 1e5)));
+    t.push_back(real(
+        "object.gap", "share by which each fragment is shrunk, so none touch at t = 0",
+        [](Scene& s) -> double& { return s.object.gap; }, closed(0, 0.5)));
     // [explosion]
-    t.push_back(vec3("explosion.offset_m", "m; blast centre relative to the cube's centre",
-                     [](Scene& s) -> Eigen::Vector3d& { return s.explosion.offset_m; },
-                     closed(-1e6, 1e6)));
-    t.push_back(real("explosion.speed_mps", "m/s; radial speed away from the blast centre",
-                     [](Scene& s) -> double& { return s.explosion.speed_mps; }, closed(0, 1000)));
-    t.push_back(real("explosion.jitter", "relative random variation of each fragment's velocity",
-                     [](Scene& s) -> double& { return s.explosion.jitter; }, closed(0, 1)));
-    t.push_back(real("explosion.spin_radps", "rad/s; largest random spin of a fragment",
-                     [](Scene& s) -> double& { return s.explosion.spin_radps; }, closed(0, 1000)));
-    t.push_back(real("explosion.toward_camera_mps",
-                     "m/s; aims the blast: added ballistic velocity carrying the cube's centre "
-                     "to the moving camera's eye (0 = undirected)",
-                     [](Scene& s) -> double& { return s.explosion.toward_camera_mps; },
-                     closed(0, 1000)));
+    t.push_back(vec3(
+        "explosion.offset_m", "m; blast centre relative to the cube's centre",
+        [](Scene& s) -> Eigen::Vector3d& { return s.explosion.offset_m; }, closed(-1e6, 1e6)));
+    t.push_back(real(
+        "explosion.speed_mps", "m/s; radial speed away from the blast centre",
+        [](Scene& s) -> double& { return s.explosion.speed_mps; }, closed(0, 1000)));
+    t.push_back(real(
+        "explosion.jitter", "relative random variation of each fragment's velocity",
+        [](Scene& s) -> double& { return s.explosion.jitter; }, closed(0, 1)));
+    t.push_back(real(
+        "explosion.spin_radps", "rad/s; largest random spin of a fragment",
+        [](Scene& s) -> double& { return s.explosion.spin_radps; }, closed(0, 1000)));
+    t.push_back(real(
+        "explosion.toward_camera_mps",
+        "m/s; aims the blast: added ballistic velocity carrying the cube's centre "
+        "to the moving camera's eye (0 = undirected)",
+        [](Scene& s) -> double& { return s.explosion.toward_camera_mps; }, closed(0, 1000)));
     // [ground]
     t.push_back(boolean("ground.enabled", "on|off; an infinite ground plane",
                         [](Scene& s) -> bool& { return s.ground.enabled; }));
-    t.push_back(real("ground.height_m", "m; height of the ground plane",
-                     [](Scene& s) -> double& { return s.ground.height_m; }, closed(-1e6, 1e6)));
-    t.push_back(real("ground.friction", "Coulomb friction coefficient",
-                     [](Scene& s) -> double& { return s.ground.friction; }, closed(0, 100)));
-    t.push_back(real("ground.restitution", "bounce, 0 to 1",
-                     [](Scene& s) -> double& { return s.ground.restitution; }, closed(0, 1)));
+    t.push_back(real(
+        "ground.height_m", "m; height of the ground plane",
+        [](Scene& s) -> double& { return s.ground.height_m; }, closed(-1e6, 1e6)));
+    t.push_back(real(
+        "ground.friction", "Coulomb friction coefficient",
+        [](Scene& s) -> double& { return s.ground.friction; }, closed(0, 100)));
+    t.push_back(real(
+        "ground.restitution", "bounce, 0 to 1",
+        [](Scene& s) -> double& { return s.ground.restitution; }, closed(0, 1)));
     // [camera]
     t.push_back(waypoints());
-    t.push_back(vec3("camera.look_at_m", "m; the point the camera looks at",
-                     [](Scene& s) -> Eigen::Vector3d& { return s.camera.look_at_m; },
-                     closed(-1e6, 1e6)));
-    t.push_back(real("camera.speed_mps", "m/s; speed along the waypoints",
-                     [](Scene& s) -> double& { return s.camera.speed_mps; }, closed(0, 1000)));
-    t.push_back(real("camera.max_speed_mps",
-                     "m/s; V_c, the fastest the player can move the camera (>= speed_mps)",
-                     [](Scene& s) -> double& { return s.camera.max_speed_mps; }, closed(0, 1000)));
-    t.push_back(real("camera.fovy_deg", "degrees; vertical field of view",
-                     [](Scene& s) -> double& { return s.camera.fovy_deg; }, open(0, 180)));
-    t.push_back(real("camera.aspect", "viewport width over height",
-                     [](Scene& s) -> double& { return s.camera.aspect; }, open_closed(0, 100)));
-    t.push_back(real("camera.near_m", "m; near clip distance",
-                     [](Scene& s) -> double& { return s.camera.near_m; }, open_closed(0, 1000)));
-    t.push_back(real("camera.far_m", "m; far clip distance (> near_m)",
-                     [](Scene& s) -> double& { return s.camera.far_m; }, open_closed(0, 1e7)));
-    t.push_back(vec3("camera.body_size_m", "m; the camera body, a box centred on the eye",
-                     [](Scene& s) -> Eigen::Vector3d& { return s.camera.body_size_m; },
-                     open_closed(0, 100)));
+    t.push_back(vec3(
+        "camera.look_at_m", "m; the point the camera looks at",
+        [](Scene& s) -> Eigen::Vector3d& { return s.camera.look_at_m; }, closed(-1e6, 1e6)));
+    t.push_back(real(
+        "camera.speed_mps", "m/s; speed along the waypoints",
+        [](Scene& s) -> double& { return s.camera.speed_mps; }, closed(0, 1000)));
+    t.push_back(real(
+        "camera.max_speed_mps",
+        "m/s; V_c, the fastest the player can move the camera (>= speed_mps)",
+        [](Scene& s) -> double& { return s.camera.max_speed_mps; }, closed(0, 1000)));
+    t.push_back(real(
+        "camera.fovy_deg", "degrees; vertical field of view",
+        [](Scene& s) -> double& { return s.camera.fovy_deg; }, open(0, 180)));
+    t.push_back(real(
+        "camera.aspect", "viewport width over height",
+        [](Scene& s) -> double& { return s.camera.aspect; }, open_closed(0, 100)));
+    t.push_back(real(
+        "camera.near_m", "m; near clip distance",
+        [](Scene& s) -> double& { return s.camera.near_m; }, open_closed(0, 1000)));
+    t.push_back(real(
+        "camera.far_m", "m; far clip distance (> near_m)",
+        [](Scene& s) -> double& { return s.camera.far_m; }, open_closed(0, 1e7)));
+    t.push_back(vec3(
+        "camera.body_size_m", "m; the camera body, a box centred on the eye",
+        [](Scene& s) -> Eigen::Vector3d& { return s.camera.body_size_m; }, open_closed(0, 100)));
     // [wall]
-    t.push_back(real("wall.distance_m", "m; wall centre in front of the eye",
-                     [](Scene& s) -> double& { return s.wall.distance_m; }, open_closed(0, 1000)));
-    t.push_back(real("wall.thickness_m", "m; depth of the wall box",
-                     [](Scene& s) -> double& { return s.wall.thickness_m; }, open_closed(0, 100)));
-    t.push_back(real("wall.margin", "wall size over the frustum's cross-section",
-                     [](Scene& s) -> double& { return s.wall.margin; }, closed(1, 100)));
-    t.push_back(real("wall.restitution", "bounce off the wall, 0 to 1",
-                     [](Scene& s) -> double& { return s.wall.restitution; }, closed(0, 1)));
+    t.push_back(real(
+        "wall.distance_m", "m; wall centre in front of the eye",
+        [](Scene& s) -> double& { return s.wall.distance_m; }, open_closed(0, 1000)));
+    t.push_back(real(
+        "wall.thickness_m", "m; depth of the wall box",
+        [](Scene& s) -> double& { return s.wall.thickness_m; }, open_closed(0, 100)));
+    t.push_back(real(
+        "wall.margin", "wall size over the frustum's cross-section",
+        [](Scene& s) -> double& { return s.wall.margin; }, closed(1, 100)));
+    t.push_back(real(
+        "wall.restitution", "bounce off the wall, 0 to 1",
+        [](Scene& s) -> double& { return s.wall.restitution; }, closed(0, 1)));
     // [deflect-all]
-    t.push_back(real("deflect-all.accel_mps2", "m/s^2; push away from the view axis",
-                     [](Scene& s) -> double& { return s.deflect_all.accel_mps2; },
-                     closed(0, 1e6)));
-    t.push_back(real("deflect-all.range_m", "m; only fragments this close to the eye are pushed",
-                     [](Scene& s) -> double& { return s.deflect_all.range_m; }, closed(0, 1e6)));
+    t.push_back(real(
+        "deflect-all.accel_mps2", "m/s^2; push away from the view axis",
+        [](Scene& s) -> double& { return s.deflect_all.accel_mps2; }, closed(0, 1e6)));
+    t.push_back(real(
+        "deflect-all.range_m", "m; only fragments this close to the eye are pushed",
+        [](Scene& s) -> double& { return s.deflect_all.range_m; }, closed(0, 1e6)));
     // [near-plane]
-    t.push_back(real("near-plane.min_near_m", "m; the closest the near plane may come",
-                     [](Scene& s) -> double& { return s.near_plane.min_near_m; },
-                     open_closed(0, 1000)));
-    t.push_back(real("near-plane.margin_m", "m; kept between the near plane and a fragment",
-                     [](Scene& s) -> double& { return s.near_plane.margin_m; }, closed(0, 100)));
-    t.push_back(integer("near-plane.depth_bits", "bits of the depth buffer",
-                        [](Scene& s) -> int& { return s.near_plane.depth_bits; }, 8, 32));
-    t.push_back(real("near-plane.ref_distance_m", "m; distance at which the depth step is reported",
-                     [](Scene& s) -> double& { return s.near_plane.ref_distance_m; },
-                     open_closed(0, 1e7)));
+    t.push_back(real(
+        "near-plane.min_near_m", "m; the closest the near plane may come",
+        [](Scene& s) -> double& { return s.near_plane.min_near_m; }, open_closed(0, 1000)));
+    t.push_back(real(
+        "near-plane.margin_m", "m; kept between the near plane and a fragment",
+        [](Scene& s) -> double& { return s.near_plane.margin_m; }, closed(0, 100)));
+    t.push_back(integer(
+        "near-plane.depth_bits", "bits of the depth buffer",
+        [](Scene& s) -> int& { return s.near_plane.depth_bits; }, 8, 32));
+    t.push_back(real(
+        "near-plane.ref_distance_m", "m; distance at which the depth step is reported",
+        [](Scene& s) -> double& { return s.near_plane.ref_distance_m; }, open_closed(0, 1e7)));
     // [edge]
-    t.push_back(real("edge.k", "N m s^2; gain of the thesis force (3.4)",
-                     [](Scene& s) -> double& { return s.edge.k; }, closed(0, 1e12)));
-    t.push_back(real("edge.a_max_mps2", "m/s^2; cap on the imposed acceleration",
-                     [](Scene& s) -> double& { return s.edge.a_max_mps2; }, closed(0, 1e9)));
-    t.push_back(choice<Predictor>("edge.predictor", "thesis | discrete; path used to predict",
-                                  [](Scene& s) -> Predictor& { return s.edge.predictor; },
-                                  predictors));
-    t.push_back(choice<Reach>("edge.reach", "thesis | growing; the camera's reachable region",
-                              [](Scene& s) -> Reach& { return s.edge.reach; }, reaches));
-    t.push_back(choice<Horizon>("edge.horizon", "camera | ground; height that defines t_G",
-                                [](Scene& s) -> Horizon& { return s.edge.horizon; }, horizons));
-    t.push_back(choice<Replan>("edge.replan",
-                               "never | contact | always; which non-candidates are re-examined",
-                               [](Scene& s) -> Replan& { return s.edge.replan; }, replans));
+    t.push_back(real(
+        "edge.k", "N m s^2; gain of the thesis force (3.4)",
+        [](Scene& s) -> double& { return s.edge.k; }, closed(0, 1e12)));
+    t.push_back(real(
+        "edge.a_max_mps2", "m/s^2; cap on the imposed acceleration",
+        [](Scene& s) -> double& { return s.edge.a_max_mps2; }, closed(0, 1e9)));
+    t.push_back(choice<Predictor>(
+        "edge.predictor", "thesis | discrete; path used to predict",
+        [](Scene& s) -> Predictor& { return s.edge.predictor; }, predictors));
+    t.push_back(choice<Reach>(
+        "edge.reach", "thesis | growing; the camera's reachable region",
+        [](Scene& s) -> Reach& { return s.edge.reach; }, reaches));
+    t.push_back(choice<Horizon>(
+        "edge.horizon", "camera | ground; height that defines t_G",
+        [](Scene& s) -> Horizon& { return s.edge.horizon; }, horizons));
+    t.push_back(choice<Replan>(
+        "edge.replan", "never | contact | always; which non-candidates are re-examined",
+        [](Scene& s) -> Replan& { return s.edge.replan; }, replans));
     // [metrics]
-    t.push_back(integer("metrics.grid_width_px",
-                        "pixels across the occlusion raster (height from camera.aspect)",
-                        [](Scene& s) -> int& { return s.metrics.grid_width_px; }, 8, 4096));
-    t.push_back(real("metrics.central_share",
-                     "share of the viewport's width and height spanned by the central region",
-                     [](Scene& s) -> double& { return s.metrics.central_share; },
-                     open_closed(0, 1)));
-    t.push_back(real("metrics.near_miss_m",
-                     "m; a fragment passing this close to the eye without touching is a near miss",
-                     [](Scene& s) -> double& { return s.metrics.near_miss_m; },
-                     open_closed(0, 1000)));
-    t.push_back(real("metrics.deviation_threshold_m",
-                     "m; a fragment moved farther than this from its `none` path counts as deviated",
-                     [](Scene& s) -> double& { return s.metrics.deviation_threshold_m; },
-                     open_closed(0, 1000)));
+    t.push_back(integer(
+        "metrics.grid_width_px", "pixels across the occlusion raster (height from camera.aspect)",
+        [](Scene& s) -> int& { return s.metrics.grid_width_px; }, 8, 4096));
+    t.push_back(real(
+        "metrics.central_share",
+        "share of the viewport's width and height spanned by the central region",
+        [](Scene& s) -> double& { return s.metrics.central_share; }, open_closed(0, 1)));
+    t.push_back(real(
+        "metrics.near_miss_m",
+        "m; a fragment passing this close to the eye without touching is a near miss",
+        [](Scene& s) -> double& { return s.metrics.near_miss_m; }, open_closed(0, 1000)));
+    t.push_back(real(
+        "metrics.deviation_threshold_m",
+        "m; a fragment moved farther than this from its `none` path counts as deviated",
+        [](Scene& s) -> double& { return s.metrics.deviation_threshold_m; }, open_closed(0, 1000)));
     return t;
   }();
   return table;
@@ -434,8 +472,9 @@ void apply(Scene& scene, const std::string& key, const std::string& value,
 
 const po::options_description& scene_options() {
   static const po::options_description desc = [] {
-    po::options_description d("Scene keys (file sections [simulation], [camera], ...; any key "
-                              "also on the command line)");
+    po::options_description d(
+        "Scene keys (file sections [simulation], [camera], ...; any key "
+        "also on the command line)");
     const Scene defaults;
     for (const KeySpec& k : keys()) {
       d.add_options()(k.name.c_str(), po::value<std::string>()->value_name("V"),
@@ -518,8 +557,8 @@ std::string scene_to_ini(const Scene& scene) {
 void validate_scene(const Scene& s) {
   auto fail = [](const std::string& msg) { throw SceneError(msg); };
   if (s.camera.far_m <= s.camera.near_m) {
-    fail("camera.far_m = " + format_double(s.camera.far_m) + ": must be > camera.near_m = " +
-         format_double(s.camera.near_m));
+    fail("camera.far_m = " + format_double(s.camera.far_m) +
+         ": must be > camera.near_m = " + format_double(s.camera.near_m));
   }
   if (s.camera.max_speed_mps < s.camera.speed_mps) {
     fail("camera.max_speed_mps = " + format_double(s.camera.max_speed_mps) +

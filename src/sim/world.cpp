@@ -14,7 +14,9 @@ struct OdeLibrary {
   OdeLibrary() { dInitODE2(0); }
   ~OdeLibrary() { dCloseODE(); }
 };
-void ensure_ode() { static OdeLibrary lib; }
+void ensure_ode() {
+  static OdeLibrary lib;
+}
 
 enum class GeomKind : int { kFragment, kGround, kCameraSensor, kWall };
 
@@ -57,6 +59,7 @@ struct World::Impl {
   std::vector<int> hits;
   int wall_contact_count = 0;
   bool fragment_collisions = false;
+  bool exact_solver = false;
   GroundDef ground;
 
   static void near_callback(void* data, dGeomID a, dGeomID b) {
@@ -111,6 +114,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
   Impl& w = *impl_;
   w.fragment_collisions = scene.sim.fragment_collisions;
+  w.exact_solver = scene.sim.uses_exact_solver();
   w.ground = scene.ground;
   w.wall = needs.camera_wall;
   w.world = dWorldCreate();
@@ -168,8 +172,8 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   if (w.wall) {
     w.wall_body = dBodyCreate(w.world);
     dBodySetKinematic(w.wall_body);
-    dGeomID wall = dCreateBox(w.static_space, w.wall->width_m, w.wall->height_m,
-                              w.wall->thickness_m);
+    dGeomID wall =
+        dCreateBox(w.static_space, w.wall->width_m, w.wall->height_m, w.wall->thickness_m);
     dGeomSetBody(wall, w.wall_body);
     dGeomSetData(wall, &w.wall_tag);
   }
@@ -183,7 +187,9 @@ World::~World() {
   dWorldDestroy(w.world);  // destroys bodies and joints
 }
 
-int World::fragment_count() const { return static_cast<int>(impl_->bodies.size()); }
+int World::fragment_count() const {
+  return static_cast<int>(impl_->bodies.size());
+}
 
 std::vector<FragmentState> World::init_states() const {
   std::vector<FragmentState> out = impl_->constant;
@@ -218,8 +224,8 @@ void World::set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_m
 
 void World::add_forces(std::span<const AppliedForce> forces) {
   for (const AppliedForce& f : forces) {
-    dBodyAddForce(impl_->bodies[static_cast<std::size_t>(f.fragment)], f.force_N.x(),
-                  f.force_N.y(), f.force_N.z());
+    dBodyAddForce(impl_->bodies[static_cast<std::size_t>(f.fragment)], f.force_N.x(), f.force_N.y(),
+                  f.force_N.z());
   }
 }
 
@@ -232,13 +238,21 @@ void World::step(double dt_s) {
   dSpaceCollide2(reinterpret_cast<dGeomID>(w.fragment_space),
                  reinterpret_cast<dGeomID>(w.static_space), &w, &Impl::near_callback);
   if (w.fragment_collisions) dSpaceCollide(w.fragment_space, &w, &Impl::near_callback);
-  dWorldQuickStep(w.world, dt_s);
+  if (w.exact_solver) {
+    dWorldStep(w.world, dt_s);
+  } else {
+    dWorldQuickStep(w.world, dt_s);
+  }
   dJointGroupEmpty(w.contacts);
   std::sort(w.hits.begin(), w.hits.end());
 }
 
-const std::vector<int>& World::camera_hits() const { return impl_->hits; }
-int World::wall_contacts() const { return impl_->wall_contact_count; }
+const std::vector<int>& World::camera_hits() const {
+  return impl_->hits;
+}
+int World::wall_contacts() const {
+  return impl_->wall_contact_count;
+}
 
 std::string World::ode_version() {
 #ifdef FRAGSIM_ODE_VERSION

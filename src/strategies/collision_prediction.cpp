@@ -40,11 +40,8 @@ Quartic ball_contact_quartic(const BallisticPath& path, const Eigen::Vector3d& c
   const Eigen::Vector3d d = path.p0_m - centre_m;
   const Eigen::Vector3d& v = path.v0_mps;
   const Eigen::Vector3d a = 0.5 * path.g_mps2;
-  return {d.dot(d) - r0_m * r0_m,
-          2.0 * d.dot(v) - 2.0 * r0_m * growth_mps,
-          v.dot(v) + 2.0 * d.dot(a) - growth_mps * growth_mps,
-          2.0 * v.dot(a),
-          a.dot(a)};
+  return {d.dot(d) - r0_m * r0_m, 2.0 * d.dot(v) - 2.0 * r0_m * growth_mps,
+          v.dot(v) + 2.0 * d.dot(a) - growth_mps * growth_mps, 2.0 * v.dot(a), a.dot(a)};
 }
 
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
@@ -58,8 +55,8 @@ ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector
   } else {
     growth = model.max_speed_mps;
   }
-  const auto t = first_nonpositive(ball_contact_quartic(path, camera_m, r0, growth), 0.0,
-                                   t_horizon_s);
+  const auto t =
+      first_nonpositive(ball_contact_quartic(path, camera_m, r0, growth), 0.0, t_horizon_s);
   if (t) {
     out.candidate = true;
     out.t_contact_s = *t;
@@ -86,7 +83,8 @@ std::optional<Eigen::Vector2d> near_plane_crossing(const BallisticPath& path,
 Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Vector2d& point) {
   const double to_side = camera.near_half_width_m() - std::abs(point.x());
   const double to_top_bottom = camera.near_half_height_m() - std::abs(point.y());
-  if (to_side < to_top_bottom) return point.x() < 0.0 ? Eigen::Vector3d(-camera.right) : camera.right;
+  if (to_side < to_top_bottom)
+    return point.x() < 0.0 ? Eigen::Vector3d(-camera.right) : camera.right;
   return point.y() < 0.0 ? Eigen::Vector3d(-camera.up) : camera.up;
 }
 

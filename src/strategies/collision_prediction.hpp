@@ -18,7 +18,9 @@ struct BallisticPath {
   Eigen::Vector3d v0_mps = Eigen::Vector3d::Zero();
   Eigen::Vector3d g_mps2 = Eigen::Vector3d::Zero();
 
-  Eigen::Vector3d at(double tau_s) const { return p0_m + v0_mps * tau_s + 0.5 * g_mps2 * tau_s * tau_s; }
+  Eigen::Vector3d at(double tau_s) const {
+    return p0_m + v0_mps * tau_s + 0.5 * g_mps2 * tau_s * tau_s;
+  }
 };
 
 // The path the predictor believes in. `discrete` uses V + g dt/2: ODE's semi-implicit Euler puts

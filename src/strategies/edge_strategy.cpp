@@ -28,8 +28,7 @@ bool EdgeStrategy::should_examine(const StepContext& ctx, std::size_t i) const {
 void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   const CameraPose& cam = ctx.camera;
   const double body_radius_m = ctx.camera_body_half_m.norm();
-  const double y_ref_m =
-      params_.horizon == Horizon::kCamera ? cam.eye_m.y() : ctx.ground_height_m;
+  const double y_ref_m = params_.horizon == Horizon::kCamera ? cam.eye_m.y() : ctx.ground_height_m;
   const double remaining_s = std::max(ctx.duration_s - ctx.t_s, 0.0);
   for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
     if (!should_examine(ctx, i)) continue;

@@ -21,8 +21,9 @@ Quartic derivative(const Quartic& c) {
 // Size of the terms at x: the scale against which "p(x) is zero" is judged.
 double magnitude(const Quartic& c, double x) {
   const double ax = std::abs(x);
-  return std::abs(c[0]) + ax * (std::abs(c[1]) + ax * (std::abs(c[2]) +
-                                ax * (std::abs(c[3]) + ax * std::abs(c[4]))));
+  return std::abs(c[0]) +
+         ax *
+             (std::abs(c[1]) + ax * (std::abs(c[2]) + ax * (std::abs(c[3]) + ax * std::abs(c[4]))));
 }
 
 // Horner's rounding error on a quartic is at most about 8 u |terms| (u = eps / 2): a value that
@@ -109,8 +110,11 @@ std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi) 
   const std::vector<double> pts = break_points(c, lo, hi);
   for (std::size_t i = 1; i < pts.size(); ++i) {
     if (nonpositive(pts[i])) {
-      // p > 0 at pts[i-1] and <= 0 at pts[i], monotone between: one crossing.
-      if (evaluate(c, pts[i]) > 0.0) return pts[i];  // a touch within rounding
+      // A break point within rounding of zero is a touch (a double root at a critical point):
+      // it is exact there, while bisection would stop up to sqrt(eps) early, where rounding
+      // first makes p look non-positive.
+      if (near_zero(c, pts[i])) return pts[i];
+      // p > 0 at pts[i-1] and < 0 at pts[i], monotone between: one crossing.
       return bisect(c, pts[i - 1], pts[i]);
     }
   }

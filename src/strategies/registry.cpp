@@ -31,8 +31,8 @@ void validate(const WallParams& p) {
 }
 
 void validate(const DeflectAllParams& p) {
-  require(std::isfinite(p.accel_mps2) && p.accel_mps2 >= 0, "deflect-all.accel_mps2",
-          p.accel_mps2, "must be >= 0");
+  require(std::isfinite(p.accel_mps2) && p.accel_mps2 >= 0, "deflect-all.accel_mps2", p.accel_mps2,
+          "must be >= 0");
   require(std::isfinite(p.range_m) && p.range_m >= 0, "deflect-all.range_m", p.range_m,
           "must be >= 0");
 }
@@ -81,7 +81,8 @@ std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scen
   }
   std::string known;
   for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown strategy '" + std::string(name) + "' (known: " + known + ")");
+  throw std::invalid_argument("unknown strategy '" + std::string(name) + "' (known: " + known +
+                              ")");
 }
 
 }  // namespace fragsim

@@ -15,13 +15,13 @@
 namespace fragsim {
 
 struct StepContext {
-  int step = 0;         // index of the step about to be taken
-  double t_s = 0.0;     // time at the start of the step; 0 is the explosion
+  int step = 0;      // index of the step about to be taken
+  double t_s = 0.0;  // time at the start of the step; 0 is the explosion
   double dt_s = 0.0;
   double duration_s = 0.0;
-  CameraPose camera;                               // as rendered now (scene near distance)
+  CameraPose camera;  // as rendered now (scene near distance)
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();
-  double camera_max_speed_mps = 0.0;               // V_c
+  double camera_max_speed_mps = 0.0;  // V_c
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
   double ground_height_m = 0.0;

@@ -25,15 +25,15 @@ enum class Replan { kNever, kContact, kAlways };
 struct NoneParams {};
 
 struct WallParams {
-  double distance_m = 0.6;       // from the eye along the view direction
-  double thickness_m = 0.05;     // depth of the box
-  double margin = 1.25;          // wall size over the frustum's cross-section at distance_m
-  double restitution = 0.3;      // bounce of fragments off the wall
+  double distance_m = 0.6;    // from the eye along the view direction
+  double thickness_m = 0.05;  // depth of the box
+  double margin = 1.25;       // wall size over the frustum's cross-section at distance_m
+  double restitution = 0.3;   // bounce of fragments off the wall
 };
 
 struct DeflectAllParams {
-  double accel_mps2 = 60.0;   // push away from the view axis, per unit mass
-  double range_m = 6.0;       // only fragments closer than this to the eye are pushed
+  double accel_mps2 = 60.0;  // push away from the view axis, per unit mass
+  double range_m = 6.0;      // only fragments closer than this to the eye are pushed
 };
 
 struct NearPlaneParams {
@@ -44,8 +44,8 @@ struct NearPlaneParams {
 };
 
 struct EdgeParams {
-  double k = 40.0;                // gain of (3.4), N s m
-  double a_max_mps2 = 400.0;      // cap on the imposed acceleration
+  double k = 1.0;            // gain of (3.4), N m s^2
+  double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
   Predictor predictor = Predictor::kThesis;
   Reach reach = Reach::kThesis;
   Horizon horizon = Horizon::kCamera;

@@ -18,6 +18,8 @@ WallStrategy::WallStrategy(const WallParams& params, const CameraDef& camera) {
   spec_.restitution = params.restitution;
 }
 
-WorldNeeds WallStrategy::needs() const { return WorldNeeds{spec_}; }
+WorldNeeds WallStrategy::needs() const {
+  return WorldNeeds{spec_};
+}
 
 }  // namespace fragsim

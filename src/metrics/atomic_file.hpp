@@ -1,0 +1,34 @@
+#pragma once
+// An output file that appears whole or not at all: written to a temporary file in the same folder
+// and renamed over the target on commit(). Destroyed without commit (an exception, an early
+// return), it removes the temporary file and leaves any old target untouched.
+
+#include <fstream>
+#include <string>
+
+namespace fragsim {
+
+class AtomicFile {
+ public:
+  // Throws std::runtime_error naming the path if the temporary file cannot be created.
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ostream& out() { return out_; }
+  // Flushes, checks every write succeeded and renames into place; throws naming the path if not.
+  void commit();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::string temp_path_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// Writes `text` to `path` through an AtomicFile.
+void write_file_atomically(const std::string& path, const std::string& text);
+
+}  // namespace fragsim

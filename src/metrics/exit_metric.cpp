@@ -1,0 +1,138 @@
+#include "metrics/exit_metric.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace fragsim {
+
+std::string_view exit_name(Exit exit) {
+  switch (exit) {
+    case Exit::kNone:
+      return "none";
+    case Exit::kTop:
+      return "top";
+    case Exit::kBottom:
+      return "bottom";
+    case Exit::kLeft:
+      return "left";
+    case Exit::kRight:
+      return "right";
+    case Exit::kNear:
+      return "near";
+    case Exit::kStayed:
+      return "stayed";
+  }
+  return "none";
+}
+
+namespace {
+
+bool on_screen(const CameraPose& camera, const Eigen::Vector3d& c_m) {
+  const double z = c_m.z();
+  return z >= camera.near_m && z <= camera.far_m && std::abs(c_m.x()) <= camera.half_width_at(z) &&
+         std::abs(c_m.y()) <= camera.half_height_at(z);
+}
+
+// The exit of a fragment now off screen at camera-space centre c_m. Past the far plane no border
+// is crossed; it is then put on the border it is closest to, which is what the same rule gives.
+Exit classify(const CameraPose& camera, const Eigen::Vector3d& c_m) {
+  const double z = c_m.z();
+  if (z < camera.near_m) return Exit::kNear;
+  const double nx = c_m.x() / camera.half_width_at(z);
+  const double ny = c_m.y() / camera.half_height_at(z);
+  // A tie (a corner) goes to the side border; the split is arbitrary but deterministic.
+  if (std::abs(ny) > std::abs(nx)) return ny > 0.0 ? Exit::kTop : Exit::kBottom;
+  return nx < 0.0 ? Exit::kLeft : Exit::kRight;
+}
+
+// Squared distance from the eye (the origin) to the segment a-b.
+double segment_eye_distance2(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d d = b - a;
+  const double len2 = d.squaredNorm();
+  const double s = len2 > 0.0 ? std::clamp(-a.dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + s * d).squaredNorm();
+}
+
+}  // namespace
+
+void ExitMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
+  const auto n = static_cast<std::size_t>(info.fragment_count);
+  assert(initial.fragments.size() == n);
+  prev_.resize(n);
+  on_screen_.assign(n, 0);
+  last_exit_.assign(n, Exit::kNone);
+  passed_close_.assign(n, 0);
+  touched_.assign(n, 0);
+  const double near_miss2 = near_miss_m_ * near_miss_m_;
+  for (std::size_t i = 0; i < n; ++i) {
+    const SweepEnd e = sweep_end(initial.camera, initial.fragments[i]);
+    prev_[i] = e;
+    on_screen_[i] = on_screen(initial.camera, e.centre_m);
+    passed_close_[i] = e.centre_m.squaredNorm() <= near_miss2;
+    // A fragment spawned touching the camera was never a clean pass, whatever it does next.
+    touched_[i] = sweep_meets_near_rectangle(e, e) ||
+                  sweep_meets_camera_body(e, e, initial.camera_body_half_m);
+  }
+}
+
+void ExitMetric::observe(const StepSnapshot& snap) {
+  assert(snap.fragments.size() == prev_.size());
+  const double near_miss2 = near_miss_m_ * near_miss_m_;
+  for (std::size_t i = 0; i < prev_.size(); ++i) {
+    const SweepEnd now = sweep_end(snap.camera, snap.fragments[i]);
+    const bool visible = on_screen(snap.camera, now.centre_m);
+    if (on_screen_[i] && !visible) last_exit_[i] = classify(snap.camera, now.centre_m);
+    on_screen_[i] = visible;
+    // Sampled positions alone would miss a fast fragment that passes the eye between snapshots.
+    if (!passed_close_[i] && segment_eye_distance2(prev_[i].centre_m, now.centre_m) <= near_miss2) {
+      passed_close_[i] = 1;
+    }
+    if (!touched_[i] && (sweep_meets_near_rectangle(prev_[i], now) ||
+                         sweep_meets_camera_body(prev_[i], now, snap.camera_body_half_m))) {
+      touched_[i] = 1;
+    }
+    prev_[i] = now;
+  }
+  for (int f : snap.camera_hits) {
+    assert(f >= 0 && static_cast<std::size_t>(f) < touched_.size());
+    touched_[static_cast<std::size_t>(f)] = 1;
+  }
+}
+
+void ExitMetric::fill(RunSummary& s) const {
+  s.exits_top = 0;
+  s.exits_bottom = 0;
+  s.exits_left = 0;
+  s.exits_right = 0;
+  s.exits_near = 0;
+  s.exits_stayed = 0;
+  s.near_misses = 0;
+  for (int f = 0; f < fragments(); ++f) {
+    switch (exit(f)) {
+      case Exit::kNone:
+        break;
+      case Exit::kTop:
+        ++s.exits_top;
+        break;
+      case Exit::kBottom:
+        ++s.exits_bottom;
+        break;
+      case Exit::kLeft:
+        ++s.exits_left;
+        break;
+      case Exit::kRight:
+        ++s.exits_right;
+        break;
+      case Exit::kNear:
+        ++s.exits_near;
+        break;
+      case Exit::kStayed:
+        ++s.exits_stayed;
+        break;
+    }
+    if (near_miss(f)) ++s.near_misses;
+  }
+}
+
+}  // namespace fragsim

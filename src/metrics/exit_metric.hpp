@@ -1,0 +1,56 @@
+#pragma once
+// Exits and near misses (METHOD.md section 6). A fragment is on screen when its centre lies in the
+// view frustum of that snapshot's camera. When it goes from on screen to off screen between two
+// snapshots its exit is the near plane (its depth is now short of the near distance, or behind the
+// eye) or else the border its centre is furthest past; a later re-entry and exit replaces the
+// earlier one. A near miss is a centre path passing within near_miss_m of the eye by a fragment
+// whose box never met the near rectangle or the camera body (swept_box.hpp, or the physics'
+// sensor): the fly-by that makes the shot, as opposed to a clip.
+
+#include <string_view>
+#include <vector>
+
+#include "metrics/run_summary.hpp"
+#include "metrics/swept_box.hpp"
+#include "sim/run_observer.hpp"
+#include "sim/scene.hpp"
+
+namespace fragsim {
+
+// How a fragment left the screen. kNone: never on screen; kStayed: on screen at the last snapshot.
+enum class Exit { kNone, kTop, kBottom, kLeft, kRight, kNear, kStayed };
+
+// Lower-case name for CSV columns: "none", "top", "bottom", "left", "right", "near", "stayed".
+std::string_view exit_name(Exit exit);
+
+class ExitMetric final : public RunObserver {
+ public:
+  explicit ExitMetric(const MetricsDef& def) : near_miss_m_(def.near_miss_m) {}
+
+  void begin(const RunInfo& info, const StepSnapshot& initial) override;
+  void observe(const StepSnapshot& snap) override;
+  void fill(RunSummary& summary) const;
+
+  int fragments() const { return static_cast<int>(prev_.size()); }
+  // As of the last snapshot observed.
+  Exit exit(int fragment) const {
+    const auto i = static_cast<std::size_t>(fragment);
+    return on_screen_[i] ? Exit::kStayed : last_exit_[i];
+  }
+  bool near_miss(int fragment) const {
+    const auto i = static_cast<std::size_t>(fragment);
+    return passed_close_[i] && !touched_[i];
+  }
+  // Whether the fragment met the near rectangle or the camera body.
+  bool touched(int fragment) const { return touched_[static_cast<std::size_t>(fragment)] != 0; }
+
+ private:
+  double near_miss_m_;
+  std::vector<SweepEnd> prev_;
+  std::vector<char> on_screen_;
+  std::vector<Exit> last_exit_;
+  std::vector<char> passed_close_;
+  std::vector<char> touched_;
+};
+
+}  // namespace fragsim

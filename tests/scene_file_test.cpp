@@ -1,0 +1,124 @@
+#include "sim/scene_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace fragsim {
+namespace {
+
+// The message a bad scene text raises (empty if it parses).
+std::string error_of(const std::string& text, const std::vector<SceneOverride>& overrides = {}) {
+  try {
+    parse_scene(text, "bad.ini", overrides);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneFile, ReadsSectionsAndKeys) {
+  const Scene s = parse_scene(
+      "name = demo\n"
+      "[simulation]\n"
+      "dt_s = 0.01   # a comment\n"
+      "fragment_collisions = on\n"
+      "[camera]\n"
+      "waypoints_m = 0 1 0; 0 1 -2; 1 1 -3\n"
+      "fovy_deg = 75\n"
+      "[edge]\n"
+      "predictor = discrete\n",
+      "demo.ini");
+  EXPECT_EQ(s.name, "demo");
+  EXPECT_EQ(s.sim.dt_s, 0.01);
+  EXPECT_TRUE(s.sim.fragment_collisions);
+  ASSERT_EQ(s.camera.waypoints_m.size(), 3u);
+  EXPECT_EQ(s.camera.waypoints_m[2], Eigen::Vector3d(1, 1, -3));
+  EXPECT_EQ(s.camera.fovy_deg, 75.0);
+  EXPECT_EQ(s.edge.predictor, Predictor::kDiscrete);
+  // Untouched keys keep their defaults.
+  EXPECT_EQ(s.object.splits, Scene{}.object.splits);
+}
+
+TEST(SceneFile, CommandLineOverridesTheFile) {
+  const Scene s = parse_scene("[camera]\nspeed_mps = 1\n", "a.ini", {{"camera.speed_mps", "2.5"}});
+  EXPECT_EQ(s.camera.speed_mps, 2.5);
+}
+
+TEST(SceneFile, RoundTripIsExact) {
+  Scene s;
+  s.name = "trip";
+  s.sim.dt_s = 1.0 / 60.0;
+  s.sim.seed = 18446744073709551615ull;
+  s.object.centre_m = {0.1, 1.0 / 3.0, -7.25};
+  s.camera.waypoints_m = {{0, 1.6, 0}, {0.2, 1.6, -4.0 / 3.0}};
+  s.edge.reach = Reach::kGrowing;
+  s.edge.replan = Replan::kContact;
+  const std::string ini = scene_to_ini(s);
+  const Scene back = parse_scene(ini, "trip.ini");
+  EXPECT_EQ(scene_to_ini(back), ini);
+  EXPECT_EQ(back.sim.dt_s, s.sim.dt_s);
+  EXPECT_EQ(back.sim.seed, s.sim.seed);
+  EXPECT_EQ(back.object.centre_m, s.object.centre_m);
+  EXPECT_EQ(back.camera.waypoints_m[1], s.camera.waypoints_m[1]);
+  EXPECT_EQ(back.edge.reach, Reach::kGrowing);
+}
+
+TEST(SceneFile, OutOfRangeValueNamesFileLineKeyAndRule) {
+  EXPECT_EQ(error_of("[camera]\n\nfovy_deg = 200\n"),
+            "bad.ini:3: camera.fovy_deg = '200': must be in (0, 180)");
+}
+
+TEST(SceneFile, NonFiniteAndMalformedNumbersAreRejected) {
+  EXPECT_EQ(error_of("[simulation]\ndt_s = nan\n"),
+            "bad.ini:2: simulation.dt_s = 'nan': must be finite");
+  EXPECT_EQ(error_of("[simulation]\ndt_s = inf\n"),
+            "bad.ini:2: simulation.dt_s = 'inf': must be finite");
+  EXPECT_EQ(error_of("[simulation]\ndt_s = 0.01x\n"),
+            "bad.ini:2: simulation.dt_s = '0.01x': not a number");
+  EXPECT_EQ(error_of("[object]\nsplits = -3\n"),
+            "bad.ini:2: object.splits = '-3': must be a whole number in [1, 64]");
+  EXPECT_EQ(error_of("[object]\ncentre_m = 1 2\n"),
+            "bad.ini:2: object.centre_m = '1 2': expected three numbers x y z");
+}
+
+TEST(SceneFile, UnknownKeyAndBadLinesAreErrors) {
+  EXPECT_EQ(error_of("[camera]\nspeed = 2\n"), "bad.ini:2: unknown key 'camera.speed'");
+  EXPECT_EQ(error_of("[camera]\nthis is not a setting\n"),
+            "bad.ini:2: expected 'key = value', got 'this is not a setting'");
+  EXPECT_EQ(error_of("[camera\n"), "bad.ini:1: malformed section header '[camera'");
+  EXPECT_EQ(error_of("[camera]\nnear_m = 0.1\nnear_m = 0.2\n"),
+            "bad.ini:3: camera.near_m is set more than once");
+}
+
+TEST(SceneFile, ContradictionsAreErrors) {
+  EXPECT_EQ(error_of("[camera]\nnear_m = 5\nfar_m = 4\n"),
+            "camera.far_m = 4: must be > camera.near_m = 5");
+  EXPECT_NE(error_of("[camera]\nspeed_mps = 5\nmax_speed_mps = 4\n").find("camera.max_speed_mps"),
+            std::string::npos);
+}
+
+TEST(SceneFile, BadOverrideNamesTheOption) {
+  EXPECT_EQ(error_of("", {{"camera.near_m", "-1"}}),
+            "--camera.near_m: camera.near_m = '-1': must be in (0, 1000]");
+}
+
+TEST(SceneFile, MissingFileIsNamed) {
+  try {
+    load_scene("/nonexistent/scene.ini");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.ini: cannot open scene file");
+  }
+}
+
+TEST(SceneFile, ShippedScenesLoad) {
+  for (const char* name : {"front", "thesis125", "thesis1000", "close"}) {
+    const std::string path = std::string(FRAGSIM_DATA_DIR) + "/scenes/" + name + ".ini";
+    EXPECT_NO_THROW(load_scene(path)) << path;
+  }
+}
+
+}  // namespace
+}  // namespace fragsim

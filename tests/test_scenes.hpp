@@ -1,0 +1,64 @@
+#pragma once
+// Small hand-made scenes for the tests: one fragment fired along a known line at a still camera.
+
+#include <vector>
+
+#include "sim/run_observer.hpp"
+#include "sim/scene.hpp"
+
+namespace fragsim::test {
+
+// A still camera at (0, 1.6, 0) looking down -z (right = +x, up = +y), and one 0.1 m box at
+// `start_m` moving at `speed_mps` along +z (toward the camera) with no gravity, no spin, no ground.
+inline Scene single_fragment(const Eigen::Vector3d& start_m, double speed_mps = 10.0) {
+  Scene s;
+  s.name = "single";
+  s.sim.duration_s = 1.5;
+  s.sim.gravity_mps2 = Eigen::Vector3d::Zero();
+  s.object.centre_m = start_m;
+  s.object.size_m = 0.1;
+  s.object.splits = 1;
+  s.object.gap = 0.0;
+  // The blast sits 1 m behind the fragment, so its radial push is exactly +z.
+  s.explosion.offset_m = {0.0, 0.0, -1.0};
+  s.explosion.speed_mps = speed_mps;
+  s.explosion.jitter = 0.0;
+  s.explosion.spin_radps = 0.0;
+  s.explosion.toward_camera_mps = 0.0;
+  s.ground.enabled = false;
+  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
+  s.camera.look_at_m = {0.0, 1.6, -10.0};
+  s.camera.speed_mps = 0.0;
+  s.camera.max_speed_mps = 1.0;
+  return s;
+}
+
+// Keeps a copy of every snapshot's fragments, forces, candidates and camera near distance.
+class Recorder final : public RunObserver {
+ public:
+  struct Step {
+    std::vector<FragmentState> fragments;
+    std::vector<AppliedForce> forces;
+    std::vector<int> candidates;
+    std::vector<int> camera_hits;
+    double near_m = 0.0;
+  };
+  std::vector<Step> steps;  // steps[0] is the explosion
+
+  void begin(const RunInfo&, const StepSnapshot& s) override {
+    steps.clear();
+    keep(s);
+  }
+  void observe(const StepSnapshot& s) override { keep(s); }
+
+ private:
+  void keep(const StepSnapshot& s) {
+    steps.push_back({{s.fragments.begin(), s.fragments.end()},
+                     {s.forces.begin(), s.forces.end()},
+                     {s.candidates.begin(), s.candidates.end()},
+                     {s.camera_hits.begin(), s.camera_hits.end()},
+                     s.camera.near_m});
+  }
+};
+
+}  // namespace fragsim::test
