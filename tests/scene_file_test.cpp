@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace fragsim {
@@ -117,6 +119,32 @@ TEST(SceneFile, ShippedScenesLoad) {
   for (const char* name : {"front", "thesis125", "thesis1000", "close"}) {
     const std::string path = std::string(FRAGSIM_DATA_DIR) + "/scenes/" + name + ".ini";
     EXPECT_NO_THROW(load_scene(path)) << path;
+  }
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+TEST(SceneFile, EveryKeyIsDocumented) {
+  std::ifstream in(std::string(FRAGSIM_DATA_DIR) + "/scenes/README.md");
+  ASSERT_TRUE(in) << "data/scenes/README.md is missing";
+  std::stringstream doc;
+  doc << in.rdbuf();
+  for (const auto& option : scene_options().options()) {
+    const std::string full = option->long_name();
+    const auto dot = full.find('.');
+    const std::string section = dot == std::string::npos ? "" : full.substr(0, dot);
+    const std::string key = dot == std::string::npos ? full : full.substr(dot + 1);
+    const std::string text = doc.str();
+    const auto at = text.find("### [" + section + "]");
+    if (!section.empty()) {
+      ASSERT_NE(at, std::string::npos) << "no section [" << section << "] in data/scenes/README.md";
+    }
+    EXPECT_NE(text.find("| `" + key + "` |", section.empty() ? 0 : at), std::string::npos)
+        << full << " is not documented in data/scenes/README.md";
   }
 }
 
