@@ -54,6 +54,20 @@ void print_report(const Scene& scene, const std::vector<Evaluation>& runs, std::
       out << "wall: " << e.summary.wall_contacts << " contact points with the wall\n";
     }
   }
+  out << "cost per step, median / p95:";
+  for (const Evaluation& e : runs) {
+    const RunSummary& s = e.summary;
+    out << (&e == &runs.front() ? " " : "; ") << s.strategy << " " << fixed(s.physics_ms_median, 2)
+        << "/" << fixed(s.physics_ms_p95, 2) << " + " << fixed(s.strategy_ms_median, 2) << "/"
+        << fixed(s.strategy_ms_p95, 2) << " ms";
+  }
+  out << " (physics + strategy)\n";
+  for (const Evaluation& e : runs) {
+    if (e.summary.unsaved_by_cap > 0) {
+      out << e.summary.strategy << ": " << e.summary.unsaved_by_cap
+          << " fragments the acceleration cap left unsaved (capped and still intersecting)\n";
+    }
+  }
   if (const auto best = best_for_thesis_goals(runs)) {
     const RunSummary& s = runs[*best].summary;
     const int hits = s.near_fragments + s.camera_hit_fragments;

@@ -57,6 +57,7 @@ const std::vector<Column>& summary_columns() {
       {"impulse_Ns", &RunSummary::impulse_Ns},
       {"max_accel_mps2", &RunSummary::max_accel_mps2},
       {"capped_forces", &RunSummary::capped_forces},
+      {"unsaved_by_cap", &RunSummary::unsaved_by_cap},
       {"guarded", &RunSummary::guarded},
       {"wall_contacts", &RunSummary::wall_contacts},
       {"min_near_m", &RunSummary::min_near_m},

@@ -49,6 +49,9 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   activity.fill(s);
   cost.fill(s);
   exits.fill(s);
+  for (int i = 0; i < s.fragments; ++i) {
+    if (activity.was_capped(i) && (near.intersected(i) || near.camera_hit(i))) ++s.unsaved_by_cap;
+  }
   e.near_per_step = near.per_step();
   e.candidates_per_step = activity.candidates_per_step();
   e.physics_s_per_step = cost.physics_s();

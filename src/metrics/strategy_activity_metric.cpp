@@ -12,6 +12,7 @@ void StrategyActivityMetric::begin(const RunInfo& info, const StepSnapshot&) {
   candidates_.clear();
   near_m_.clear();
   forced_.assign(static_cast<std::size_t>(info.fragment_count), 0);
+  capped_fragment_.assign(static_cast<std::size_t>(info.fragment_count), 0);
   capped_ = guarded_ = wall_contacts_ = 0;
   impulse_Ns_ = max_accel_mps2_ = 0.0;
 }
@@ -19,7 +20,8 @@ void StrategyActivityMetric::begin(const RunInfo& info, const StepSnapshot&) {
 void StrategyActivityMetric::observe(const StepSnapshot& snap) {
   candidates_.push_back(static_cast<int>(snap.candidates.size()));
   near_m_.push_back(snap.camera.near_m);
-  capped_ += snap.capped;
+  capped_ += static_cast<int>(snap.capped.size());
+  for (int i : snap.capped) capped_fragment_[static_cast<std::size_t>(i)] = 1;
   guarded_ += snap.guarded;
   wall_contacts_ += snap.wall_contacts;
   for (const AppliedForce& f : snap.forces) {

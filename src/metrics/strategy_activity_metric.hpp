@@ -20,6 +20,10 @@ class StrategyActivityMetric final : public RunObserver {
 
   const std::vector<int>& candidates_per_step() const { return candidates_; }
   const std::vector<double>& near_per_step_m() const { return near_m_; }
+  // Whether the acceleration cap ever reduced this fragment's force.
+  bool was_capped(int fragment) const {
+    return capped_fragment_[static_cast<std::size_t>(fragment)] != 0;
+  }
 
  private:
   int depth_bits_;
@@ -28,6 +32,7 @@ class StrategyActivityMetric final : public RunObserver {
   std::vector<int> candidates_;
   std::vector<double> near_m_;
   std::vector<char> forced_;
+  std::vector<char> capped_fragment_;
   int capped_ = 0;
   int guarded_ = 0;
   int wall_contacts_ = 0;

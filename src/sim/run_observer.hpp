@@ -24,7 +24,7 @@ struct StepSnapshot {
   // What the strategy did in the step that led here (empty for step 0).
   std::span<const AppliedForce> forces;
   std::span<const int> candidates;
-  int capped = 0;
+  std::span<const int> capped;  // fragments whose force the cap reduced
   int guarded = 0;
   // What the physics saw in that step.
   std::span<const int> camera_hits;  // fragments that touched the camera's sensor volume

@@ -32,14 +32,14 @@ struct StepOutput {
   std::vector<AppliedForce> forces;  // at most one entry per fragment
   std::vector<int> candidates;       // fragments the strategy considers threatening (edge)
   std::optional<double> near_m;      // a near distance other than the scene's (near-plane)
-  int capped = 0;                    // forces the acceleration cap reduced this step
+  std::vector<int> capped;           // fragments whose force the acceleration cap reduced
   int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
 
   void clear() {
     forces.clear();
     candidates.clear();
     near_m.reset();
-    capped = 0;
+    capped.clear();
     guarded = 0;
   }
 };
