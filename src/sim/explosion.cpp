@@ -32,6 +32,13 @@ Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraPath& ca
 
 }  // namespace
 
+Eigen::Vector3d object_centre(const Scene& scene) {
+  const ObjectDef& obj = scene.object;
+  if (obj.distance_m <= 0.0) return obj.centre_m;
+  const Eigen::Vector3d eye = scene.camera.waypoints_m.front();
+  return eye + obj.distance_m * (obj.centre_m - eye).normalized();
+}
+
 std::vector<FragmentSpawn> explode(const Scene& scene) {
   const ObjectDef& obj = scene.object;
   const ExplosionDef& ex = scene.explosion;
@@ -39,8 +46,9 @@ std::vector<FragmentSpawn> explode(const Scene& scene) {
   const double cell_m = obj.size_m / n;
   const double half_m = 0.5 * cell_m * (1.0 - obj.gap);
   const double mass_kg = obj.density_kgpm3 * std::pow(2.0 * half_m, 3);
-  const Eigen::Vector3d blast_m = obj.centre_m + ex.offset_m;
-  const Eigen::Vector3d aim_mps = aimed_velocity(obj.centre_m, CameraPath(scene.camera),
+  const Eigen::Vector3d centre_m = object_centre(scene);
+  const Eigen::Vector3d blast_m = centre_m + ex.offset_m;
+  const Eigen::Vector3d aim_mps = aimed_velocity(centre_m, CameraPath(scene.camera),
                                                  ex.toward_camera_mps, scene.sim.gravity_mps2);
 
   Random rng(scene.sim.seed);
@@ -53,7 +61,7 @@ std::vector<FragmentSpawn> explode(const Scene& scene) {
         const Eigen::Vector3d local((ix + 0.5) * cell_m - 0.5 * obj.size_m,
                                     (iy + 0.5) * cell_m - 0.5 * obj.size_m,
                                     (iz + 0.5) * cell_m - 0.5 * obj.size_m);
-        f.position_m = obj.centre_m + local;
+        f.position_m = centre_m + local;
         f.half_extents_m = Eigen::Vector3d::Constant(half_m);
         f.mass_kg = mass_kg;
         Eigen::Vector3d radial = f.position_m - blast_m;

@@ -16,6 +16,10 @@ struct FragmentSpawn {
   double mass_kg = 0.0;
 };
 
+// Where the object's centre is: object.centre_m, or, with object.distance_m set, the point that
+// far from the camera's start on the line through centre_m.
+Eigen::Vector3d object_centre(const Scene& scene);
+
 // Deterministic for a given scene (seeded by scene.sim.seed). Fragments are ordered x fastest,
 // then y, then z, so fragment i is the same piece of the object in every run of the scene.
 std::vector<FragmentSpawn> explode(const Scene& scene);

@@ -42,6 +42,9 @@ struct ObjectDef {
   int splits = 12;      // per axis: splits^3 fragments
   double density_kgpm3 = 600.0;
   double gap = 0.02;  // fragments are shrunk by this share so none touch at t = 0
+  // When > 0, the object is moved along the line from the camera's first waypoint through
+  // centre_m to this distance from the eye (for sweeps over the explosion's distance).
+  double distance_m = 0.0;
 };
 
 struct ExplosionDef {

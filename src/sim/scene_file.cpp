@@ -271,6 +271,10 @@ const std::vector<KeySpec>& keys() {
     t.push_back(real(
         "object.size_m", "m; edge of the cube", [](Scene& s) -> double& { return s.object.size_m; },
         open_closed(0, 1000)));
+    t.push_back(real("object.distance_m",
+                     "m; if > 0, the cube is moved along the line from the camera's first "
+                     "waypoint through centre_m to this distance from it (0: centre_m as is)",
+                     [](Scene& s) -> double& { return s.object.distance_m; }, closed(0, 1e6)));
     t.push_back(integer(
         "object.splits", "pieces per axis; splits^3 fragments",
         [](Scene& s) -> int& { return s.object.splits; }, 1, 64));
@@ -569,6 +573,11 @@ void validate_scene(const Scene& s) {
       fail("camera.look_at_m = " + format_vec3(s.camera.look_at_m) +
            ": must be farther than camera.near_m from every waypoint");
     }
+  }
+  if (s.object.distance_m > 0.0 &&
+      (s.object.centre_m - s.camera.waypoints_m.front()).norm() < 1e-9) {
+    fail("object.distance_m = " + format_double(s.object.distance_m) +
+         ": needs object.centre_m away from the camera's first waypoint to give a direction");
   }
   if (s.near_plane.min_near_m > s.camera.near_m) {
     fail("near-plane.min_near_m = " + format_double(s.near_plane.min_near_m) +
