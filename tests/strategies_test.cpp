@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 
 #include "metrics/near_plane_metric.hpp"
 #include "sim/simulation.hpp"
@@ -185,6 +186,45 @@ TEST(Registry, UnknownNameAndBadParameterAreNamed) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("edge.k = -1"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// Thrown down and toward the camera from 3 m up, 6 m ahead: at t = 0 its path comes down through
+// the camera's height after 0.2 s, 4.8 m away, so it is no candidate (ball radius 0.2 s * 1 m/s
+// + 0.27 m). It bounces off the ground 3.6 m ahead (no friction: it keeps its 6 m/s toward the
+// camera) and rises to 0.74 m, so for a while its path enters the reachable ball again.
+Scene bouncing_fragment(Replan replan) {
+  Scene s = test::single_fragment({0.03, 3.0, -6.0}, 6.0 * std::sqrt(2.0));
+  s.explosion.offset_m = {0.0, 1.0, -1.0};  // push down and toward the camera
+  s.sim.gravity_mps2 = {0.0, -9.81, 0.0};
+  s.ground.enabled = true;
+  s.ground.restitution = 0.5;
+  s.ground.friction = 0.0;  // keeps its speed toward the camera through the bounce
+  s.sim.duration_s = 2.0;
+  s.edge.replan = replan;
+  return s;
+}
+
+int candidate_steps(const Scene& scene) {
+  auto s = make_strategy("edge", scene);
+  test::Recorder rec;
+  const std::array<RunObserver*, 1> obs{&rec};
+  simulate(scene, *s, obs);
+  int n = 0;
+  for (const auto& step : rec.steps) n += static_cast<int>(step.candidates.size());
+  EXPECT_TRUE(rec.steps[1].candidates.empty()) << "a candidate at t = 0";
+  return n;
+}
+
+TEST(EdgeStrategy, ReplanNeverIgnoresTheBounceContactAndAlwaysSeeIt) {
+  EXPECT_EQ(candidate_steps(bouncing_fragment(Replan::kNever)), 0);
+  EXPECT_GT(candidate_steps(bouncing_fragment(Replan::kContact)), 0);
+  EXPECT_GT(candidate_steps(bouncing_fragment(Replan::kAlways)), 0);
 }
 
 }  // namespace

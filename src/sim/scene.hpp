@@ -96,6 +96,7 @@ struct Scene {
   DeflectAllParams deflect_all;
   NearPlaneParams near_plane;
   EdgeParams edge;
+  EdgeMinParams edge_min;
   MetricsDef metrics;
 
   int fragment_count() const { return object.splits * object.splits * object.splits; }

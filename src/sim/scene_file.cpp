@@ -393,6 +393,11 @@ const std::vector<KeySpec>& keys() {
     t.push_back(choice<Replan>(
         "edge.replan", "never | contact | always; which non-candidates are re-examined",
         [](Scene& s) -> Replan& { return s.edge.replan; }, replans));
+    // [edge-min]
+    t.push_back(real("edge-min.margin_m", "m; clearance kept beyond the protected rectangle's edge",
+                     [](Scene& s) -> double& { return s.edge_min.margin_m; }, closed(0, 100)));
+    t.push_back(real("edge-min.a_max_mps2", "m/s^2; cap on the imposed acceleration",
+                     [](Scene& s) -> double& { return s.edge_min.a_max_mps2; }, closed(0, 1e9)));
     // [metrics]
     t.push_back(integer(
         "metrics.grid_width_px", "pixels across the occlusion raster (height from camera.aspect)",

@@ -35,7 +35,8 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     pushed_[i] = 0;
     const FragmentState& f = ctx.fragments[i];
     const BallisticPath path = predicted_path(f, ctx.gravity_mps2, params_.predictor, ctx.dt_s);
-    const double t_ground_s = time_to_horizon(path, y_ref_m, remaining_s);
+    // Nothing after the scene's end can hit the camera: t_G never reaches past it.
+    const double t_ground_s = std::min(time_to_horizon(path, y_ref_m, remaining_s), remaining_s);
     const ReachModel reach{params_.reach, ctx.camera_max_speed_mps, body_radius_m + f.radius_m};
     const ContactPrediction pred = predict_contact(path, cam.eye_m, reach, t_ground_s);
     candidate_[i] = pred.candidate ? 1 : 0;

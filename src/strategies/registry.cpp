@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "strategies/deflect_all_strategy.hpp"
+#include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
 #include "strategies/near_plane_strategy.hpp"
 #include "strategies/none_strategy.hpp"
@@ -54,10 +55,18 @@ void validate(const EdgeParams& p) {
           "must be >= 0");
 }
 
+void validate(const EdgeMinParams& p) {
+  require(std::isfinite(p.margin_m) && p.margin_m >= 0, "edge-min.margin_m", p.margin_m,
+          "must be >= 0");
+  require(std::isfinite(p.a_max_mps2) && p.a_max_mps2 >= 0, "edge-min.a_max_mps2", p.a_max_mps2,
+          "must be >= 0");
+}
+
 }  // namespace
 
 const std::vector<std::string>& strategy_names() {
-  static const std::vector<std::string> names{"none", "wall", "deflect-all", "near-plane", "edge"};
+  static const std::vector<std::string> names{"none",       "wall", "deflect-all",
+                                              "near-plane", "edge", "edge-min"};
   return names;
 }
 
@@ -78,6 +87,10 @@ std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scen
   if (name == "edge") {
     validate(scene.edge);
     return std::make_unique<EdgeStrategy>(scene.edge);
+  }
+  if (name == "edge-min") {
+    validate(scene.edge_min);
+    return std::make_unique<EdgeMinStrategy>(scene.edge_min);
   }
   std::string known;
   for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
