@@ -10,6 +10,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/report_table.hpp"
+#include "cli/sweep_command.hpp"
 #include "metrics/atomic_file.hpp"
 #include "metrics/csv_export.hpp"
 #include "metrics/evaluation.hpp"
@@ -29,6 +30,7 @@ const char* kUsage =
     "commands:\n"
     "  run      one strategy on a scene (with `none` as the deviation reference)\n"
     "  compare  every strategy on the same scene and seed\n"
+    "  sweep    scene keys over values and seeds, every combination compared, one CSV file\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
 
 void add_output_options(po::options_description& own) {
@@ -111,10 +113,12 @@ int main(int argc, char** argv) {
     return kUsageError;
   }
   const std::string command = argv[1];
+  remove_temporaries_on_interrupt();
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return cmd_run(args);
     if (command == "compare") return cmd_compare(args);
+    if (command == "sweep") return cli::cmd_sweep(args);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << kUsage;
       return 0;

@@ -26,7 +26,13 @@ class AtomicFile {
   std::string temp_path_;
   std::ofstream out_;
   bool committed_ = false;
+  int slot_ = -1;  // where the interrupt handler finds the temporary path
 };
+
+// On SIGINT or SIGTERM, removes every temporary file of a live AtomicFile, then exits with
+// 128 + the signal: an interrupted run leaves the old files or none, and no debris. (SIGKILL
+// cannot be caught; its debris is named PATH.tmp.PID.) Call once, from main.
+void remove_temporaries_on_interrupt();
 
 // Writes `text` to `path` through an AtomicFile.
 void write_file_atomically(const std::string& path, const std::string& text);

@@ -149,6 +149,22 @@ std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs)
   return out;
 }
 
+std::vector<std::string> summary_csv_columns() {
+  std::vector<std::string> out;
+  for (const Column& c : summary_columns()) out.emplace_back(c.name);
+  out.emplace_back("z_fighting");
+  out.emplace_back("ode_version");
+  return out;
+}
+
+std::vector<std::string> summary_csv_cells(const Scene& scene, const RunSummary& summary) {
+  std::vector<std::string> out;
+  for (const Column& c : summary_columns()) out.push_back(cell(summary, c));
+  out.emplace_back(z_fighting(summary, scene.near_plane.ref_distance_m) ? "1" : "0");
+  out.push_back(World::ode_version());
+  return out;
+}
+
 std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs) {
   std::string out =
       "strategy,step,t_s,candidates,near_intersections,occlusion,central_occlusion,near_m\n";

@@ -24,6 +24,11 @@ std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string camera_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string timing_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 
+// summary.csv's column names and one run's cells (the same text summary_csv writes), for files
+// that put summary rows beside their own columns (fragsim sweep).
+std::vector<std::string> summary_csv_columns();
+std::vector<std::string> summary_csv_cells(const Scene& scene, const RunSummary& summary);
+
 // Reads summary.csv back (for tests and tools); throws std::runtime_error naming file:line.
 std::vector<RunSummary> read_summary_csv(const std::string& path);
 

@@ -45,6 +45,8 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   s.fragments = scene.fragment_count();
   s.steps = totals.steps;
   s.wall_s = totals.wall_s;
+  s.ode_messages = totals.ode_messages;
+  s.nonfinite_fragments = totals.nonfinite_fragments;
   near.fill(s);
   activity.fill(s);
   cost.fill(s);

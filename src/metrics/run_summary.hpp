@@ -55,6 +55,10 @@ struct RunSummary {
   double min_near_m = 0.0;      // smallest near distance used (near-plane: pulled in)
   double depth_step_m = 0.0;    // depth resolution at the reference distance with min_near_m
 
+  // Health of the run.
+  long ode_messages = 0;        // warnings ODE printed
+  int nonfinite_fragments = 0;  // fragments whose state became non-finite (frozen, counted)
+
   // Cost.
   double physics_ms_median = 0.0;
   double physics_ms_p95 = 0.0;

@@ -25,6 +25,7 @@ int Scene::step_count() const {
 RunTotals simulate(const Scene& scene, Strategy& strategy,
                    std::span<RunObserver* const> observers) {
   const auto run_start = Clock::now();
+  const long messages_before = World::ode_messages();
   const CameraPath path(scene.camera);
   World world(scene, strategy.needs(), explode(scene));
   std::vector<FragmentState> states = world.init_states();
@@ -46,6 +47,9 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
 
   RunTotals totals;
   StepOutput out;
+  std::vector<Eigen::Vector3d> last_finite(states.size());
+  for (std::size_t i = 0; i < states.size(); ++i) last_finite[i] = states[i].position_m;
+  std::vector<char> frozen(states.size(), 0);
   for (int k = 0; k < steps; ++k) {
     const double t = k * dt;
     StepContext ctx;
@@ -72,6 +76,22 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     world.step(dt);
     world.read(states);
     const double physics_s = seconds_since(physics_start);
+    // Always-on state check (MuJoCo's habit): a non-finite fragment is counted and frozen where
+    // it last was finite, so no NaN reaches a strategy, a metric or a file.
+    for (std::size_t i = 0; i < states.size(); ++i) {
+      FragmentState& f = states[i];
+      if (f.position_m.allFinite() && f.velocity_mps.allFinite() && f.rotation.allFinite()) {
+        last_finite[i] = f.position_m;
+        continue;
+      }
+      if (!frozen[i]) {
+        frozen[i] = 1;
+        ++totals.nonfinite_fragments;
+      }
+      f.position_m = last_finite[i];
+      f.velocity_mps.setZero();
+      f.rotation.setIdentity();
+    }
 
     totals.physics_s += physics_s;
     totals.strategy_s += strategy_s;
@@ -96,6 +116,7 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
   }
   for (RunObserver* o : observers) o->end();
   totals.wall_s = seconds_since(run_start);
+  totals.ode_messages = World::ode_messages() - messages_before;
   return totals;
 }
 

@@ -4,14 +4,36 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cstdarg>
+#include <cstdio>
 #include <stdexcept>
 
 namespace fragsim {
 namespace {
 
+// ODE reports through process-wide hooks that carry no context pointer, so its warnings can only
+// be counted process-wide; runs read the counter before and after (World::ode_messages).
+std::atomic<long> g_ode_messages{0};
+
+void count_message(int, const char*, va_list) { ++g_ode_messages; }
+
+// ODE exits (errors) or aborts (debug checks) after its hook returns: say what happened first, as
+// one line, in fragsim's voice.
+void report_fatal(int num, const char* msg, va_list ap) {
+  std::fprintf(stderr, "fragsim: ODE internal error %d: ", num);
+  std::vfprintf(stderr, msg, ap);
+  std::fputc('\n', stderr);
+}
+
 // ODE keeps process-wide state; initialise it once and close it at exit.
 struct OdeLibrary {
-  OdeLibrary() { dInitODE2(0); }
+  OdeLibrary() {
+    dInitODE2(0);
+    dSetMessageHandler(&count_message);
+    dSetErrorHandler(&report_fatal);
+    dSetDebugHandler(&report_fatal);
+  }
   ~OdeLibrary() { dCloseODE(); }
 };
 void ensure_ode() {
@@ -253,6 +275,8 @@ const std::vector<int>& World::camera_hits() const {
 int World::wall_contacts() const {
   return impl_->wall_contact_count;
 }
+
+long World::ode_messages() { return g_ode_messages.load(); }
 
 std::string World::ode_version() {
 #ifdef FRAGSIM_ODE_VERSION

@@ -41,6 +41,9 @@ class World {
   // Contact points between fragments and the wall in the last step.
   int wall_contacts() const;
 
+  // Warnings ODE has printed in this process so far (its message hook has no context).
+  static long ode_messages();
+
   // The version string of the ODE library, for reports.
   static std::string ode_version();
 
