@@ -6,6 +6,7 @@
 
 #include "metrics/csv_export.hpp"
 #include "metrics/evaluation.hpp"
+#include "metrics/process_runner.hpp"
 #include "metrics/trajectory_record.hpp"
 #include "sim/scene_file.hpp"
 
@@ -90,6 +91,39 @@ TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
   const auto best = best_for_thesis_goals(runs);
   ASSERT_TRUE(best.has_value());
   EXPECT_EQ(*best, 3u);
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+TEST(Comparison, WorkerProcessesGiveTheSameResultsAsOneProcess) {
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
+  const std::vector<std::string> all{"none",       "wall", "deflect-all",
+                                     "near-plane", "edge", "edge-min"};
+  const auto one = compare(scene, all, true, nullptr, 1);
+  const auto two = compare(scene, all, true, nullptr, 2);
+  const auto six = compare(scene, all, true, nullptr, 6);
+  EXPECT_EQ(summary_csv(scene, one), summary_csv(scene, two));
+  EXPECT_EQ(steps_csv(scene, one), steps_csv(scene, two));
+  EXPECT_EQ(camera_csv(scene, one), camera_csv(scene, two));
+  EXPECT_EQ(summary_csv(scene, one), summary_csv(scene, six));
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].physics_s_per_step.size(), two[i].physics_s_per_step.size());
+  }
+}
+
+TEST(Comparison, AFailingWorkerIsReportedNotHidden) {
+  EXPECT_THROW(run_in_processes(3, 2,
+                                [](std::size_t i) -> std::string {
+                                  if (i == 1) throw std::runtime_error("boom");
+                                  return "ok";
+                                }),
+               std::runtime_error);
+  const auto r = run_in_processes(5, 2, [](std::size_t i) { return std::to_string(i * i); });
+  EXPECT_EQ(r, (std::vector<std::string>{"0", "1", "4", "9", "16"}));
 }
 
 }  // namespace

@@ -41,8 +41,8 @@ const std::string kLongRun =
 
 TEST(OutputSafety, InterruptedRunLeavesNoFileAndNoDebris) {
   const fs::path dir = fresh_dir("fragsim_interrupted");
-  const int status = shell("timeout -s TERM 1 " + kBin + kLongRun + " --csv " + dir.string() +
-                           " >/dev/null 2>&1");
+  const int status =
+      shell("timeout -s TERM 1 " + kBin + kLongRun + " --csv " + dir.string() + " >/dev/null 2>&1");
   ASSERT_EQ(status, 124) << "the run was not interrupted (timeout's status for a killed command)";
   ASSERT_TRUE(fs::exists(dir));  // created before the run
   for (const auto& entry : fs::directory_iterator(dir)) {
@@ -58,8 +58,8 @@ TEST(OutputSafety, KilledRunKeepsTheOldFilesWhole) {
   const std::string old_summary = read_all(dir / "summary.csv");
   ASSERT_FALSE(old_summary.empty());
   // SIGKILL cannot be caught: the temporary file stays, the old summary must stay whole.
-  const int status = shell("timeout -s KILL 1 " + kBin + kLongRun + " --csv " + dir.string() +
-                           " >/dev/null 2>&1");
+  const int status =
+      shell("timeout -s KILL 1 " + kBin + kLongRun + " --csv " + dir.string() + " >/dev/null 2>&1");
   ASSERT_EQ(status, 137);
   EXPECT_EQ(read_all(dir / "summary.csv"), old_summary);
   EXPECT_FALSE(fs::exists(dir / "trajectories.csv"));
@@ -91,7 +91,8 @@ TEST(Determinism, TwoProcessesWriteTheSameBytes) {
                     d.string() + " >/dev/null"),
               0);
   }
-  for (const char* f : {"summary.csv", "steps.csv", "camera.csv", "trajectories.csv", "config.ini"}) {
+  for (const char* f :
+       {"summary.csv", "steps.csv", "camera.csv", "trajectories.csv", "config.ini"}) {
     const std::string bytes = read_all(a / f);
     EXPECT_FALSE(bytes.empty()) << f;
     EXPECT_EQ(bytes, read_all(b / f)) << f;

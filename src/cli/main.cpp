@@ -14,6 +14,7 @@
 #include "metrics/atomic_file.hpp"
 #include "metrics/csv_export.hpp"
 #include "metrics/evaluation.hpp"
+#include "metrics/process_runner.hpp"
 #include "metrics/trajectory_writer.hpp"
 #include "strategies/registry.hpp"
 
@@ -38,7 +39,9 @@ void add_output_options(po::options_description& own) {
                     "write summary.csv, steps.csv, camera.csv, timing.csv and config.ini to DIR")(
       "trajectories", "also write DIR/trajectories.csv (one row per fragment per step: large)")(
       "force", "overwrite the files of an existing, non-empty DIR")(
-      "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)");
+      "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
+      "jobs", po::value<int>()->value_name("J"),
+      "worker processes for the strategies (default: one per core; --trajectories runs in one)");
 }
 
 // Runs `names` and prints the report; writes the CSV files when asked.
@@ -70,7 +73,15 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
     traj_file.emplace((std::filesystem::path(*dir) / "trajectories.csv").string());
     traj.emplace(traj_file->out());
   }
-  const std::vector<Evaluation> runs = compare(p.scene, names, occlusion, traj ? &*traj : nullptr);
+  int jobs = online_cpus();
+  if (p.options.count("jobs")) {
+    jobs = p.options["jobs"].as<int>();
+    if (jobs < 1 || jobs > 1024) {
+      throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
+    }
+  }
+  const std::vector<Evaluation> runs =
+      compare(p.scene, names, occlusion, traj ? &*traj : nullptr, jobs);
   cli::print_report(p.scene, runs, std::cout);
   if (dir) {
     write_comparison_csv(*dir, p.scene, runs);

@@ -59,6 +59,8 @@ const std::vector<Column>& summary_columns() {
       {"capped_forces", &RunSummary::capped_forces},
       {"unsaved_by_cap", &RunSummary::unsaved_by_cap},
       {"guarded", &RunSummary::guarded},
+      {"ode_messages", &RunSummary::ode_messages},
+      {"nonfinite_fragments", &RunSummary::nonfinite_fragments},
       {"wall_contacts", &RunSummary::wall_contacts},
       {"min_near_m", &RunSummary::min_near_m},
       {"depth_step_m", &RunSummary::depth_step_m},
@@ -155,6 +157,18 @@ std::vector<std::string> summary_csv_columns() {
   out.emplace_back("z_fighting");
   out.emplace_back("ode_version");
   return out;
+}
+
+std::vector<std::string> summary_fields(const RunSummary& summary) {
+  std::vector<std::string> out;
+  for (const Column& c : summary_columns()) out.push_back(cell(summary, c));
+  return out;
+}
+
+void set_summary_fields(RunSummary& summary, const std::vector<std::string>& fields) {
+  const auto& cols = summary_columns();
+  if (fields.size() != cols.size()) throw std::runtime_error("summary fields: wrong count");
+  for (std::size_t i = 0; i < cols.size(); ++i) set_cell(summary, cols[i], fields[i]);
 }
 
 std::vector<std::string> summary_csv_cells(const Scene& scene, const RunSummary& summary) {

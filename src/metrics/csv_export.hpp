@@ -29,6 +29,11 @@ std::string timing_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::vector<std::string> summary_csv_columns();
 std::vector<std::string> summary_csv_cells(const Scene& scene, const RunSummary& summary);
 
+// Every summary.csv field of a run as text (the deterministic part of RunSummary: all but the
+// timings), and back: how a run's summary crosses a process boundary exactly.
+std::vector<std::string> summary_fields(const RunSummary& summary);
+void set_summary_fields(RunSummary& summary, const std::vector<std::string>& fields);
+
 // Reads summary.csv back (for tests and tools); throws std::runtime_error naming file:line.
 std::vector<RunSummary> read_summary_csv(const std::string& path);
 

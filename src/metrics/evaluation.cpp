@@ -5,9 +5,11 @@
 #include "metrics/camera_track.hpp"
 #include "metrics/cost_metric.hpp"
 #include "metrics/deviation_metric.hpp"
+#include "metrics/evaluation_codec.hpp"
 #include "metrics/exit_metric.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "metrics/occlusion_metric.hpp"
+#include "metrics/process_runner.hpp"
 #include "metrics/strategy_activity_metric.hpp"
 #include "metrics/trajectory_record.hpp"
 #include "sim/simulation.hpp"
@@ -45,7 +47,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   s.fragments = scene.fragment_count();
   s.steps = totals.steps;
   s.wall_s = totals.wall_s;
-  s.ode_messages = totals.ode_messages;
+  s.ode_messages = static_cast<int>(totals.ode_messages);
   s.nonfinite_fragments = totals.nonfinite_fragments;
   near.fill(s);
   activity.fill(s);
@@ -72,7 +74,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
 }
 
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
-                                bool occlusion, RunObserver* extra) {
+                                bool occlusion, RunObserver* extra, int jobs) {
   for (const std::string& name : strategies) make_strategy(name, scene);  // validate all first
   TrajectoryRecord reference;
   EvaluationOptions ref_opts;
@@ -83,19 +85,25 @@ std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::strin
   if (none_named && extra) ref_opts.extra.push_back(extra);
   Evaluation none = evaluate(scene, "none", ref_opts);
 
-  std::vector<Evaluation> runs;
+  // Deviation of the reference from itself is zero by definition.
+  none.has_deviation = true;
   EvaluationOptions opts;
   opts.reference = &reference;
   opts.occlusion = occlusion;
   if (extra) opts.extra.push_back(extra);
+  std::vector<std::string> others;
   for (const std::string& name : strategies) {
-    if (name == "none") {
-      // Deviation of the reference from itself is zero by definition.
-      none.has_deviation = true;
-      runs.push_back(none);
-    } else {
-      runs.push_back(evaluate(scene, name, opts));
-    }
+    if (name != "none") others.push_back(name);
+  }
+  // Workers are forked after the reference run, so each inherits the reference trajectories.
+  // An extra observer (a trajectory writer streaming into a file) lives in this process only.
+  const std::vector<std::string> encoded = run_in_processes(
+      others.size(), extra ? 1 : jobs,
+      [&](std::size_t i) { return encode_evaluation(evaluate(scene, others[i], opts)); });
+  std::vector<Evaluation> runs;
+  std::size_t next = 0;
+  for (const std::string& name : strategies) {
+    runs.push_back(name == "none" ? none : decode_evaluation(encoded[next++]));
   }
   return runs;
 }

@@ -41,9 +41,11 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy,
 
 // Every named strategy on the same scene and seed, in the given order; `none` is run first as
 // the deviation reference whether named or not (and reported only if named). Unknown names and
-// bad parameters throw std::invalid_argument before anything runs.
+// bad parameters throw std::invalid_argument before anything runs. With jobs > 1 and no `extra`
+// observer, the strategies after the reference run in that many worker processes
+// (process_runner.hpp); the results are the same as with jobs = 1 but for the timings.
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
-                                bool occlusion = true, RunObserver* extra = nullptr);
+                                bool occlusion = true, RunObserver* extra = nullptr, int jobs = 1);
 
 // The thesis's goals, in order: no near-plane intersections or camera hits, then least mean
 // deviation, then most near misses. The best of the runs other than `none`; nullopt if none.

@@ -56,7 +56,7 @@ struct RunSummary {
   double depth_step_m = 0.0;    // depth resolution at the reference distance with min_near_m
 
   // Health of the run.
-  long ode_messages = 0;        // warnings ODE printed
+  int ode_messages = 0;         // warnings ODE printed
   int nonfinite_fragments = 0;  // fragments whose state became non-finite (frozen, counted)
 
   // Cost.
