@@ -13,7 +13,7 @@ namespace fragsim {
 
 // Which ODE stepper advances the world.
 enum class Solver {
-  kAuto,   // exact when fragments do not collide with each other, quick when they do
+  kAuto,   // exact when fragments do not collide with each other (nor with a wall), else quick
   kExact,  // dWorldStep: the exact LCP solver, per island
   kQuick,  // dWorldQuickStep: iterative, with constraints shuffled by ODE's global generator
 };

@@ -258,7 +258,8 @@ const std::vector<KeySpec>& keys() {
         [](Scene& s) -> Eigen::Vector3d& { return s.sim.gravity_mps2; }, closed(-1000, 1000)));
     t.push_back(choice<Solver>(
         "simulation.solver",
-        "auto | exact | quick; ODE stepper (auto: exact without fragment collisions, else quick)",
+        "auto | exact | quick; ODE stepper (auto: exact unless fragments collide with each "
+        "other or with the wall strategy's wall, then quick)",
         [](Scene& s) -> Solver& { return s.sim.solver; },
         {{"auto", Solver::kAuto}, {"exact", Solver::kExact}, {"quick", Solver::kQuick}}));
     t.push_back(integer(

@@ -136,7 +136,10 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
   Impl& w = *impl_;
   w.fragment_collisions = scene.sim.fragment_collisions;
-  w.exact_solver = scene.sim.uses_exact_solver();
+  // A wall joins every fragment touching it into one island, and the exact solver is cubic in an
+  // island's size (341 fragments on the wall: 3.6 s for one step, 0.011 s with QuickStep).
+  w.exact_solver = scene.sim.solver == Solver::kExact ||
+                   (scene.sim.uses_exact_solver() && !needs.camera_wall);
   w.ground = scene.ground;
   w.wall = needs.camera_wall;
   w.world = dWorldCreate();
