@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 preset="${1:-release}"
 
 packages=(cmake g++ make pkg-config libode-dev libeigen3-dev libboost-program-options-dev
-          googletest libgtest-dev libbenchmark-dev gnuplot-nox)
+          googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

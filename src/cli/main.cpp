@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/command_line.hpp"
+#include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
 #include "cli/sweep_command.hpp"
 #include "metrics/atomic_file.hpp"
@@ -32,6 +33,7 @@ const char* kUsage =
     "  run      one strategy on a scene (with `none` as the deviation reference)\n"
     "  compare  every strategy on the same scene and seed\n"
     "  sweep    scene keys over values and seeds, every combination compared, one CSV file\n"
+    "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
 
 void add_output_options(po::options_description& own) {
@@ -41,7 +43,9 @@ void add_output_options(po::options_description& own) {
       "force", "overwrite the files of an existing, non-empty DIR")(
       "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
       "jobs", po::value<int>()->value_name("J"),
-      "worker processes for the strategies (default: one per core; --trajectories runs in one)");
+      "worker processes for the strategies (default: one per core; --trajectories or --sheet "
+      "run in one)");
+  cli::add_sheet_options(own);
 }
 
 // Runs `names` and prints the report; writes the CSV files when asked.
@@ -53,6 +57,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
       throw UsageError(std::string("--strategies: ") + e.what());
     }
   }
+  const std::optional<cli::SheetRequest> sheet = cli::sheet_request(p);
   std::optional<std::string> dir;
   if (p.options.count("csv")) {
     dir = p.options["csv"].as<std::string>();
@@ -80,9 +85,14 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
       throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
     }
   }
-  const std::vector<Evaluation> runs =
-      compare(p.scene, names, occlusion, traj ? &*traj : nullptr, jobs);
+  std::optional<FrameRecorder> recorder;
+  if (sheet) recorder.emplace(sheet->steps);
+  cli::ObserverFanOut extra;
+  extra.add(traj ? &*traj : nullptr);
+  extra.add(recorder ? &*recorder : nullptr);
+  const std::vector<Evaluation> runs = compare(p.scene, names, occlusion, extra.or_null(), jobs);
   cli::print_report(p.scene, runs, std::cout);
+  if (sheet) cli::write_sheet(*sheet, p.scene, *recorder, names, std::cout);
   if (dir) {
     write_comparison_csv(*dir, p.scene, runs);
     if (traj_file) traj_file->commit();
@@ -130,6 +140,7 @@ int main(int argc, char** argv) {
     if (command == "run") return cmd_run(args);
     if (command == "compare") return cmd_compare(args);
     if (command == "sweep") return cli::cmd_sweep(args);
+    if (command == "render") return cli::cmd_render(args);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << kUsage;
       return 0;

@@ -1,0 +1,33 @@
+// One 640x360 frame of the default scene (1728 fragments) drawn by the software rasteriser, at the
+// explosion (a compact cube far away), in flight and at the camera (large boxes, near-plane cuts).
+// Run: build/release/bench/fragsim_bench --benchmark_filter=Render --benchmark_repetitions=5
+
+#include <benchmark/benchmark.h>
+
+#include "render/frame_recorder.hpp"
+#include "render/frame_renderer.hpp"
+#include "sim/scene_file.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/registry.hpp"
+
+namespace {
+
+void BM_RenderFrame(benchmark::State& state) {
+  const fragsim::Scene scene = fragsim::load_scene(FRAGSIM_DATA_DIR "/scenes/front.ini");
+  const int step = static_cast<int>(state.range(0));
+  fragsim::FrameRecorder recorder({step});
+  auto none = fragsim::make_strategy("none", scene);
+  fragsim::RunObserver* observers[] = {&recorder};
+  fragsim::simulate(scene, *none, observers);
+  const fragsim::RecordedFrame& frame = *recorder.frame("none", step);
+  fragsim::FrameStyle style;
+  style.overlays.cuts = true;
+  fragsim::FrameRenderer renderer(scene, style);
+  for (auto _ : state) {
+    const fragsim::Image image = renderer.render(frame.view());
+    benchmark::DoNotOptimize(image.bytes().data());
+  }
+}
+BENCHMARK(BM_RenderFrame)->Arg(0)->Arg(24)->Arg(45)->Unit(benchmark::kMillisecond);
+
+}  // namespace
