@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 
 #include "metrics/csv_export.hpp"
@@ -124,6 +125,34 @@ TEST(Comparison, AFailingWorkerIsReportedNotHidden) {
                std::runtime_error);
   const auto r = run_in_processes(5, 2, [](std::size_t i) { return std::to_string(i * i); });
   EXPECT_EQ(r, (std::vector<std::string>{"0", "1", "4", "9", "16"}));
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// FNV-1a, 64 bits: a stable fingerprint of a file's bytes.
+std::uint64_t fnv1a(const std::string& bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+// The default scene's summary.csv, pinned. A change of this hash means the simulation, a strategy
+// or a metric now gives different numbers for the same scene and seed: if that is intended,
+// rerun `fragsim compare --scene data/scenes/front.ini --csv DIR`, check the table, and update
+// the constant (and the README's table) in the same commit.
+TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
+  const std::vector<std::string> all{"none", "wall", "deflect-all", "near-plane", "edge",
+                                     "edge-min"};
+  const std::string csv = summary_csv(scene, compare(scene, all, true, nullptr, 2));
+  EXPECT_EQ(fnv1a(csv), 0xc9daf5bd1f5f9e15ull) << csv;
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ TEST(EdgeMinStrategy, FragmentAtTheLensIsPushedUpJustEnoughAndMisses) {
   for (std::size_t k = 1; k < o.rec.steps.size(); ++k) {
     const auto& a = o.rec.steps[k - 1].fragments[0].position_m;
     const auto& b = o.rec.steps[k].fragments[0].position_m;
-    if (a.z() < 0.0 && b.z() >= 0.0) y_at_eye = a.y() + (b.y() - a.y()) * (-a.z()) / (b.z() - a.z());
+    if (a.z() < 0.0 && b.z() >= 0.0)
+      y_at_eye = a.y() + (b.y() - a.y()) * (-a.z()) / (b.z() - a.z());
   }
   EXPECT_NEAR(y_at_eye - 1.6, 0.15 + 0.0866, 0.03);
 }

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
 
 namespace fragsim {
 namespace {
@@ -83,6 +86,108 @@ TEST(FirstRoot, LowerDegrees) {
   const auto quad = first_nonpositive({4.0, 0.0, -1.0, 0.0, 0.0}, 0.0, 5.0);  // 4 - x^2
   ASSERT_TRUE(quad.has_value());
   EXPECT_NEAR(*quad, 2.0, 1e-12);
+}
+
+TEST(FirstRoot, NearTouchIsJudgedAgainstRounding) {
+  // (x - 1)^2 + e: Horner's error at 1 is ~4 eps |terms| ~ 2e-15. Clearly above it: no root;
+  // below it: a touch, reported at the minimum; clearly negative: two roots 1 -+ sqrt(-e), the
+  // first to eps |terms| / |p'| ~ 1e-8 (|p'| = 2 sqrt(-e)).
+  auto near_square = [](double e) { return Quartic{1.0 + e, -2.0, 1.0, 0.0, 0.0}; };
+  EXPECT_FALSE(first_nonpositive(near_square(1e-13), 0.0, 3.0).has_value());
+  EXPECT_TRUE(real_roots(near_square(1e-13), 0.0, 3.0).empty());
+  const auto touch = first_nonpositive(near_square(1e-16), 0.0, 3.0);
+  ASSERT_TRUE(touch.has_value());
+  EXPECT_NEAR(*touch, 1.0, 1e-15);  // the critical point -c1 / 2 c2, exact here
+  const auto cross = first_nonpositive(near_square(-1e-13), 0.0, 3.0);
+  ASSERT_TRUE(cross.has_value());
+  EXPECT_NEAR(*cross, 1.0 - std::sqrt(1e-13), 1e-8);
+  EXPECT_EQ(real_roots(near_square(-1e-13), 0.0, 3.0).size(), 2u);
+}
+
+TEST(FirstRoot, RootsAtTheEndsOfTheInterval) {
+  const Quartic c = from_roots(1.0, 2.0, 3.0, 4.0);
+  EXPECT_EQ(first_nonpositive(c, 1.0, 1.5), std::optional<double>(1.0));
+  const auto roots = real_roots(c, 1.0, 4.0);
+  ASSERT_EQ(roots.size(), 4u);
+  EXPECT_EQ(roots.front(), 1.0);
+  EXPECT_EQ(roots.back(), 4.0);
+  // Entering exactly at the end: p(hi) = 0.
+  const auto at_end = first_nonpositive(c, 0.0, 1.0);
+  ASSERT_TRUE(at_end.has_value());
+  EXPECT_EQ(*at_end, 1.0);
+  EXPECT_EQ(first_nonpositive(c, 0.0, 0.0), std::nullopt);
+}
+
+TEST(FirstRoot, TinyRootInAWideInterval) {
+  // A root at 1e-28 inside [-1e10, 1e10], 38 orders of magnitude below the interval: the simple
+  // root is determined to 8 eps |terms| / |p'| = 8 eps 1e-28 (|p'| = 3, terms ~3e-28).
+  const Quartic c = from_roots(1e-28, 0.5, 2.0, 3.0);
+  const auto roots = real_roots(c, -1e10, 1e10);
+  ASSERT_EQ(roots.size(), 4u);
+  EXPECT_NEAR(roots[0], 1e-28, 1e-28 * 8 * 2.2e-16);
+  const auto first = first_nonpositive(c, -1e10, 1e10);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_NEAR(*first, 1e-28, 1e-28 * 8 * 2.2e-16);
+}
+
+TEST(FirstRoot, RootsWhereHornerOverflows) {
+  // (x - 1e200)(x - 1): x^2 overflows near the large root, so p is evaluated there as
+  // p(x) / x^2 = 1 - (1e200 + 1) / x + 1e200 / x^2.
+  const Quartic c{1e200, -(1e200 + 1.0), 1.0, 0.0, 0.0};
+  const auto roots = real_roots(c, -1e300, 1e300);
+  ASSERT_EQ(roots.size(), 2u);
+  EXPECT_NEAR(roots[0], 1.0, 4 * 2.2e-16);
+  EXPECT_NEAR(roots[1], 1e200, 1e200 * 4 * 2.2e-16);
+  // 1 - 1e-300 x^4 turns negative at 1e75, where x^4 = 1e300 and at the far end 1e320.
+  const auto far = first_nonpositive({1.0, 0.0, 0.0, 0.0, -1e-300}, 1e70, 1e80);
+  ASSERT_TRUE(far.has_value());
+  EXPECT_NEAR(*far, 1e75, 1e75 * 8 * 2.2e-16);
+  EXPECT_EQ(first_nonpositive({1.0, 0.0, 0.0, 0.0, 1e-300}, 1e70, 1e80), std::nullopt);
+}
+
+TEST(FirstRoot, UnusableInputGivesNothing) {
+  const Quartic c = from_roots(0.5, 2.0, 3.0, 4.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(first_nonpositive(c, 2.0, 1.0), std::nullopt);  // lo > hi
+  EXPECT_EQ(first_nonpositive(c, 0.0, inf), std::nullopt);
+  EXPECT_EQ(first_nonpositive(c, nan, 1.0), std::nullopt);
+  EXPECT_EQ(first_nonpositive({nan, 1.0, 0.0, 0.0, 0.0}, 0.0, 1.0), std::nullopt);
+  EXPECT_TRUE(real_roots({1.0, inf, 0.0, 0.0, 0.0}, 0.0, 1.0).empty());
+  // Constants: all of the interval or nothing.
+  EXPECT_EQ(first_nonpositive({-1.0, 0.0, 0.0, 0.0, 0.0}, 3.0, 5.0), std::optional<double>(3.0));
+  EXPECT_EQ(first_nonpositive({1.0, 0.0, 0.0, 0.0, 0.0}, 3.0, 5.0), std::nullopt);
+}
+
+TEST(FirstRoot, FirstNonpositiveAgreesWithRealRoots) {
+  // Two paths through the code (first_nonpositive adds a Bernstein shortcut and stops at the
+  // first entry): for p(lo) clearly positive, the first entry is the first root real_roots
+  // reports, or none. Same arithmetic on the same pieces, so the same double.
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  int entries = 0;
+  for (int n = 0; n < 20000; ++n) {
+    Quartic c{};
+    for (double& x : c) x = normal(rng);
+    const double lo = 2.0 * normal(rng);
+    const double hi = lo + std::abs(3.0 * normal(rng));
+    const double p_lo = evaluate(c, lo);
+    const double size_lo =
+        std::abs(c[0]) +
+        std::abs(lo) *
+            (std::abs(c[1]) +
+             std::abs(lo) * (std::abs(c[2]) +
+                             std::abs(lo) * (std::abs(c[3]) + std::abs(lo) * std::abs(c[4]))));
+    if (p_lo <= 16 * 2.2e-16 * size_lo) continue;  // starts inside, or too close to judge here
+    const auto first = first_nonpositive(c, lo, hi);
+    const auto roots = real_roots(c, lo, hi);
+    ASSERT_EQ(first.has_value(), !roots.empty()) << n;
+    if (first) {
+      EXPECT_EQ(*first, roots.front()) << n;
+      ++entries;
+    }
+  }
+  EXPECT_GT(entries, 1000);
 }
 
 }  // namespace

@@ -34,7 +34,8 @@ TEST_P(PredictionAccuracy, DiscreteLandsOnTheSimulatedPath) {
   const std::array<RunObserver*, 1> obs{&rec};
   simulate(scene, *none, obs);
   const FragmentState& f0 = rec.steps.front().fragments[0];
-  const BallisticPath discrete = predicted_path(f0, scene.sim.gravity_mps2, Predictor::kDiscrete, dt);
+  const BallisticPath discrete =
+      predicted_path(f0, scene.sim.gravity_mps2, Predictor::kDiscrete, dt);
   const BallisticPath thesis = predicted_path(f0, scene.sim.gravity_mps2, Predictor::kThesis, dt);
   double worst_discrete_m = 0.0;
   for (std::size_t k = 0; k < rec.steps.size(); ++k) {

@@ -12,14 +12,16 @@ Scene scene_named(const std::string& name) {
   return load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/" + name + ".ini");
 }
 
-int intersections(const RunSummary& s) { return s.near_fragments + s.camera_hit_fragments; }
+int intersections(const RunSummary& s) {
+  return s.near_fragments + s.camera_hit_fragments;
+}
 
 TEST(ThesisFigures, Fig4_3CandidatesNeverRiseAndFallToZero) {
   const Scene scene = scene_named("thesis1000");
   ASSERT_EQ(scene.fragment_count(), 1000);
   ASSERT_EQ(scene.edge.replan, Replan::kNever);
-  const std::vector<int> c = evaluate(scene, "edge", {nullptr, nullptr, false, {}})
-                                 .candidates_per_step;
+  const std::vector<int> c =
+      evaluate(scene, "edge", {nullptr, nullptr, false, {}}).candidates_per_step;
   ASSERT_FALSE(c.empty());
   EXPECT_GT(c.front(), 100);
   for (std::size_t k = 1; k < c.size(); ++k) EXPECT_LE(c[k], c[k - 1]) << "step " << k + 1;

@@ -55,6 +55,13 @@ ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector
   } else {
     growth = model.max_speed_mps;
   }
+  // Cheap rejection before any root solve: the fragment closes on the ball's centre at most at
+  // |V| + |g| tau while the ball grows at `growth`, so if even the closest it could get by the
+  // horizon stays outside the ball then, no time in between can be inside.
+  const double horizon_s = std::max(t_horizon_s, 0.0);
+  const double closest_m = (path.p0_m - camera_m).norm() - path.v0_mps.norm() * horizon_s -
+                           0.5 * path.g_mps2.norm() * horizon_s * horizon_s;
+  if (closest_m > r0 + growth * horizon_s) return out;
   const auto t =
       first_nonpositive(ball_contact_quartic(path, camera_m, r0, growth), 0.0, t_horizon_s);
   if (t) {

@@ -1,15 +1,39 @@
 #include "strategies/first_root.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 
 namespace fragsim {
 namespace {
 
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// Horner's rounding error on a polynomial of degree d is at most gamma_2d |terms| ~ d eps |terms|
+// (Higham, "Accuracy and Stability of Numerical Algorithms", section 5.1): 4 eps for a quartic.
+// A value that small is indistinguishable from zero.
+constexpr double kZeroTolerance = 4.0 * kEps;
+
+// A cap on the bracketed search: each step either halves the bracket or is a Newton step under
+// half the one before; bisection alone reaches adjacent doubles in ~64 halvings (see `split`),
+// and ~5 steps are typical.
+constexpr int kMaxIterations = 160;
+
+// Room for one level's roots or break points; a quartic needs at most 4 and 5.
+constexpr std::size_t kCapacity = 8;
+using Points = std::array<double, kCapacity>;
+
+double at(const Quartic& c, int k) {
+  return c[static_cast<std::size_t>(k)];
+}
+
 int degree(const Quartic& c) {
   for (int d = 4; d > 0; --d) {
-    if (c[static_cast<std::size_t>(d)] != 0.0) return d;
+    if (at(c, d) != 0.0) return d;
   }
   return 0;
 }
@@ -18,53 +42,261 @@ Quartic derivative(const Quartic& c) {
   return {c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0};
 }
 
-// Size of the terms at x: the scale against which "p(x) is zero" is judged.
-double magnitude(const Quartic& c, double x) {
+// p(x), p'(x) and the size of the terms, sum |c_k| |x|^k, all divided by one positive factor:
+// 1, or |x|^D where Horner's form would overflow. Signs, the Newton step p / p' and the ratio
+// |p| / size that judges "zero" are the same either way.
+struct Sample {
+  double p;
+  double dp;
+  double size;
+};
+
+// From the reversed polynomial q(u) = p(x) / x^D, u = 1 / x, whose Horner form multiplies by
+// |u| <= 1 where |x| >= 1: for roots or intervals near the top of the double range.
+template <int D>
+Sample sample_reversed(const Quartic& c, double x) {
+  const double u = 1.0 / x;
+  const double au = std::abs(u);
+  double q = c[0];
+  double dq = 0.0;
+  double size = std::abs(c[0]);
+  for (int k = 1; k <= D; ++k) {
+    dq = dq * u + q;
+    q = q * u + at(c, k);
+    size = size * au + std::abs(at(c, k));
+  }
+  // p'(x) = x^(D-1) (D q - u q'(u)), which divided by x^D is u (D q - u q').
+  double dp = u * (D * q - u * dq);
+  if (D % 2 == 1 && x < 0.0) {  // x^D < 0: divide by |x|^D instead
+    q = -q;
+    dp = -dp;
+  }
+  return {q, dp, size};
+}
+
+template <int D>
+Sample sample(const Quartic& c, double x) {
   const double ax = std::abs(x);
-  return std::abs(c[0]) +
-         ax *
-             (std::abs(c[1]) + ax * (std::abs(c[2]) + ax * (std::abs(c[3]) + ax * std::abs(c[4]))));
+  double p = at(c, D);
+  double dp = 0.0;
+  double size = std::abs(p);
+  for (int k = D - 1; k >= 0; --k) {
+    dp = dp * x + p;
+    p = p * x + at(c, k);
+    size = size * ax + std::abs(at(c, k));
+  }
+  // An overflow anywhere in the recurrences leaves an inf or a NaN in one of these.
+  if (std::isfinite(size) && std::isfinite(dp)) return {p, dp, size};
+  return sample_reversed<D>(c, x);
 }
 
-// Horner's rounding error on a quartic is at most about 8 u |terms| (u = eps / 2): a value that
-// small is indistinguishable from zero.
-constexpr double kZeroTolerance = 4.0 * std::numeric_limits<double>::epsilon();
-
-bool near_zero(const Quartic& c, double x) {
-  return std::abs(evaluate(c, x)) <= kZeroTolerance * magnitude(c, x);
+bool near_zero(const Sample& s) {
+  return std::abs(s.p) <= kZeroTolerance * s.size;
 }
 
-// The root of a polynomial that is monotone on [a, b] with p(a) and p(b) of opposite signs (or one
-// of them zero). Bisection to the last representable midpoint: ~60 halvings at most.
-double bisect(const Quartic& c, double a, double b) {
-  double fa = evaluate(c, a);
-  if (fa == 0.0) return a;
-  for (int i = 0; i < 200; ++i) {
-    const double m = 0.5 * (a + b);
-    if (m <= a || m >= b) break;
-    const double fm = evaluate(c, m);
-    if (fm == 0.0) return m;
-    if ((fm < 0.0) == (fa < 0.0)) {
-      a = m;
-      fa = fm;
+// A point strictly inside (a, b) when there is one, else a or b. The arithmetic midpoint when the
+// ends have one sign and lie within a factor 1024; otherwise 0 or the midpoint of the bit
+// patterns (a geometric mean), so that a bracket spanning many binades still shrinks to adjacent
+// doubles in about 64 halvings.
+double split(double a, double b) {
+  if (a < 0.0 && b > 0.0) return 0.0;
+  const double small = std::min(std::abs(a), std::abs(b));
+  const double large = std::max(std::abs(a), std::abs(b));
+  if (large <= 1024.0 * small) return a + 0.5 * (b - a);
+  const auto is = std::bit_cast<std::uint64_t>(small);
+  const auto il = std::bit_cast<std::uint64_t>(large);
+  const double mid = std::bit_cast<double>(is + (il - is) / 2);
+  return b > 0.0 ? mid : -mid;
+}
+
+// The root of p between a < b, given p(a) = fa and p(b) = fb of strictly opposite signs. Newton's
+// method from the regula falsi point, keeping the bracket; a step that would leave the bracket,
+// or is not under half the step before, is replaced by halving the bracket (the safeguard of
+// Numerical Recipes' rtsafe, section 9.4). Ends when the Newton step is below an ulp or the
+// bracket is two adjacent doubles: as close to the computed p's sign change as bisection gets.
+template <int D>
+double solve_bracketed(const Quartic& c, double a, double b, double fa, double fb) {
+  double neg = fa < 0.0 ? a : b;  // computed p < 0 here
+  double pos = fa < 0.0 ? b : a;  // computed p > 0 here
+  double x = a - fa * ((b - a) / (fb - fa));
+  if (!(x > a && x < b)) x = split(a, b);
+  double step = b - a;
+  for (int i = 0; i < kMaxIterations; ++i) {
+    const Sample s = sample<D>(c, x);
+    if (s.p == 0.0) return x;
+    (s.p < 0.0 ? neg : pos) = x;
+    const double lo = std::min(neg, pos);
+    const double hi = std::max(neg, pos);
+    const double newton = x - s.p / s.dp;
+    const double newton_step = std::abs(newton - x);
+    const double step_before = step;
+    if (newton > lo && newton < hi && newton_step < 0.5 * step_before) {
+      if (newton_step <= kEps * std::abs(newton)) return newton;
+      step = newton_step;
+      x = newton;
     } else {
-      b = m;
+      const double m = split(lo, hi);
+      if (!(m > lo && m < hi)) return x;
+      step = hi - lo;
+      x = m;
     }
   }
-  return 0.5 * (a + b);
+  return x;
 }
 
-// The interval's end points with the derivative's roots between them: p is monotone between
-// consecutive break points.
-std::vector<double> break_points(const Quartic& c, double lo, double hi) {
-  std::vector<double> pts{lo};
-  if (degree(c) >= 2) {
-    for (double r : real_roots(derivative(c), lo, hi)) {
-      if (r > pts.back() && r < hi) pts.push_back(r);
+template <int D>
+std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out);
+
+// The roots of a x^2 + b x + c (a != 0) strictly inside (lo, hi), ascending, for use as break
+// points: the stable formula, and where rounding makes the discriminant negative the vertex
+// stands in for two close roots (an extra break point is harmless, a missing one is not). Returns
+// nothing where the formula could over- or underflow; the caller then searches instead.
+std::optional<std::size_t> quadratic_break_points(const Quartic& q, double lo, double hi,
+                                                  Points& out) {
+  const double a = q[2];
+  const double b = q[1];
+  const double c = q[0];
+  const double disc = b * b - 4.0 * a * c;
+  if (!std::isfinite(disc) || std::max({std::abs(a), std::abs(b), std::abs(c)}) < 1e-100) {
+    return std::nullopt;
+  }
+  std::array<double, 2> r{};
+  std::size_t n = 0;
+  if (disc < 0.0) {
+    r[n++] = -b / (2.0 * a);
+  } else {
+    const double h = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    const double r1 = h / a;
+    const double r2 = h != 0.0 ? c / h : r1;
+    r[n++] = std::min(r1, r2);
+    r[n++] = std::max(r1, r2);
+  }
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (r[i] > lo && r[i] < hi) out[count++] = r[i];
+  }
+  return count;
+}
+
+// lo, the roots of p' strictly inside (lo, hi) ascending, then hi: p is monotone between
+// consecutive points (up to rounding, where p' is itself within rounding of zero).
+template <int D>
+std::size_t break_points(const Quartic& c, double lo, double hi, Points& pts) {
+  std::size_t n = 0;
+  pts[n++] = lo;
+  if constexpr (D >= 2) {
+    const Quartic dc = derivative(c);
+    Points crit;
+    std::optional<std::size_t> m;
+    if constexpr (D == 3) m = quadratic_break_points(dc, lo, hi, crit);
+    if (!m) m = real_roots_of<D - 1>(dc, lo, hi, crit);
+    for (std::size_t i = 0; i < *m; ++i) {
+      if (crit[i] > pts[n - 1] && crit[i] < hi && n + 1 < kCapacity) pts[n++] = crit[i];
     }
   }
-  pts.push_back(hi);
-  return pts;
+  pts[n++] = hi;
+  return n;
+}
+
+template <int D>
+std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out) {
+  std::size_t count = 0;
+  auto add = [&](double r) {
+    if (count < kCapacity && (count == 0 || r > out[count - 1])) out[count++] = r;
+  };
+  if constexpr (D == 1) {
+    const double r = -c[0] / c[1];
+    if (r >= lo && r <= hi) add(r);
+  } else {
+    Points pts;
+    const std::size_t n = break_points<D>(c, lo, hi, pts);
+    Sample sa = sample<D>(c, pts[0]);
+    bool za = near_zero(sa);
+    // A break point where p vanishes to rounding is a root: a double root is found here.
+    if (za) add(pts[0]);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const Sample sb = sample<D>(c, pts[i + 1]);
+      const bool zb = near_zero(sb);
+      if (!za && !zb && (sa.p < 0.0) != (sb.p < 0.0)) {
+        add(solve_bracketed<D>(c, pts[i], pts[i + 1], sa.p, sb.p));
+      }
+      if (zb) add(pts[i + 1]);
+      sa = sb;
+      za = zb;
+    }
+  }
+  return count;
+}
+
+// True when p > 0 on [lo, hi] with a margin beyond the zero judgement, certified by p's
+// Bernstein coefficients on [lo, hi] (p lies in their convex hull). One pass of ~40 flops
+// settles most paths that stay clear of the ball. With size = sum |c_k| (|lo| + hi - lo)^k, which
+// bounds the terms anywhere in the interval, the margin 32 eps size covers the conversion's
+// rounding (< 16 eps size), the zero tolerance and Horner's error (8 eps size): when this says
+// "positive" the full search would too.
+template <int D>
+bool clearly_positive(const Quartic& c, double lo, double hi) {
+  // Taylor shift to lo and scale to [0, 1]: a_k = p^(k)(lo) h^k / k!.
+  std::array<double, D + 1> a;
+  for (int k = 0; k <= D; ++k) a[static_cast<std::size_t>(k)] = at(c, k);
+  if (lo != 0.0) {
+    for (std::size_t i = 0; i < D; ++i) {
+      for (std::size_t k = D; k-- > i;) a[k] += lo * a[k + 1];
+    }
+  }
+  const double h = hi - lo;
+  double hk = 1.0;
+  for (std::size_t k = 1; k <= D; ++k) {
+    hk *= h;
+    a[k] *= hk;
+  }
+  // h^k out of the normal range (overflow to inf, or underflow that silently drops the high-order
+  // terms) makes the certificate meaningless: let the full search decide (found by fuzzing).
+  if (!std::isfinite(hk) || (h > 0.0 && hk < std::numeric_limits<double>::min())) return false;
+  for (double v : a) {
+    if (!std::isfinite(v)) return false;
+  }
+  const double reach = std::abs(lo) + h;
+  double size = 0.0;
+  for (int k = D; k >= 0; --k) size = size * reach + std::abs(at(c, k));
+  if (!std::isfinite(size)) return false;
+  const double margin = 32.0 * kEps * size;
+  // b_i = sum_k C(i, k) / C(D, k) a_k.
+  for (std::size_t i = 0; i <= D; ++i) {
+    double b = 0.0;
+    double w = 1.0;
+    for (std::size_t k = 0; k <= i; ++k) {
+      b += w * a[k];
+      w *= static_cast<double>(i - k) / static_cast<double>(D - k);
+    }
+    if (!(b > margin) || !std::isfinite(b)) return false;
+  }
+  return true;
+}
+
+template <int D>
+std::optional<double> first_nonpositive_of(const Quartic& c, double lo, double hi) {
+  Sample prev = sample<D>(c, lo);
+  if (prev.p <= 0.0 || near_zero(prev)) return lo;
+  if (clearly_positive<D>(c, lo, hi)) return std::nullopt;
+  Points pts;
+  const std::size_t n = break_points<D>(c, lo, hi, pts);
+  for (std::size_t i = 1; i < n; ++i) {
+    const Sample s = sample<D>(c, pts[i]);
+    // A break point within rounding of zero is a touch (a double root at a critical point): it
+    // is exact there, while a root search would stop up to sqrt(eps) early, where rounding first
+    // makes p look non-positive.
+    if (near_zero(s)) return pts[i];
+    // p > 0 at the previous point, < 0 here, monotone between: one crossing.
+    if (s.p < 0.0) return solve_bracketed<D>(c, pts[i - 1], pts[i], prev.p, s.p);
+    prev = s;
+  }
+  return std::nullopt;
+}
+
+bool usable(const Quartic& c, double lo, double hi) {
+  return lo <= hi && std::isfinite(lo) && std::isfinite(hi) &&
+         std::all_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); });
 }
 
 }  // namespace
@@ -74,51 +306,42 @@ double evaluate(const Quartic& c, double x) {
 }
 
 std::vector<double> real_roots(const Quartic& c, double lo, double hi) {
-  std::vector<double> roots;
-  if (!(lo <= hi)) return roots;
-  const int d = degree(c);
-  if (d == 0) return roots;  // a constant: no isolated roots (all or none)
-  if (d == 1) {
-    const double r = -c[0] / c[1];
-    if (r >= lo && r <= hi) roots.push_back(r);
-    return roots;
+  if (!usable(c, lo, hi)) return {};
+  Points r;
+  std::size_t n = 0;
+  switch (degree(c)) {
+    case 1:
+      n = real_roots_of<1>(c, lo, hi, r);
+      break;
+    case 2:
+      n = real_roots_of<2>(c, lo, hi, r);
+      break;
+    case 3:
+      n = real_roots_of<3>(c, lo, hi, r);
+      break;
+    case 4:
+      n = real_roots_of<4>(c, lo, hi, r);
+      break;
+    default:
+      break;  // a constant: no isolated roots (all or none)
   }
-  const std::vector<double> pts = break_points(c, lo, hi);
-  auto add = [&roots](double r) {
-    if (roots.empty() || r > roots.back()) roots.push_back(r);
-  };
-  for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-    const double a = pts[i];
-    const double b = pts[i + 1];
-    // A break point where p vanishes to rounding is a root: a double root is found here.
-    const bool za = near_zero(c, a);
-    const bool zb = near_zero(c, b);
-    if (za) add(a);
-    const double fa = evaluate(c, a);
-    const double fb = evaluate(c, b);
-    if (!za && !zb && ((fa < 0.0) != (fb < 0.0))) add(bisect(c, a, b));
-    if (zb && i + 2 == pts.size()) add(b);
-  }
-  return roots;
+  return {r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)};
 }
 
 std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi) {
-  if (!(lo <= hi)) return std::nullopt;
-  auto nonpositive = [&c](double x) { return evaluate(c, x) <= 0.0 || near_zero(c, x); };
-  if (nonpositive(lo)) return lo;
-  if (degree(c) == 0) return std::nullopt;
-  const std::vector<double> pts = break_points(c, lo, hi);
-  for (std::size_t i = 1; i < pts.size(); ++i) {
-    if (nonpositive(pts[i])) {
-      // A break point within rounding of zero is a touch (a double root at a critical point):
-      // it is exact there, while bisection would stop up to sqrt(eps) early, where rounding
-      // first makes p look non-positive.
-      if (near_zero(c, pts[i])) return pts[i];
-      // p > 0 at pts[i-1] and < 0 at pts[i], monotone between: one crossing.
-      return bisect(c, pts[i - 1], pts[i]);
-    }
+  if (!usable(c, lo, hi)) return std::nullopt;
+  switch (degree(c)) {
+    case 1:
+      return first_nonpositive_of<1>(c, lo, hi);
+    case 2:
+      return first_nonpositive_of<2>(c, lo, hi);
+    case 3:
+      return first_nonpositive_of<3>(c, lo, hi);
+    case 4:
+      return first_nonpositive_of<4>(c, lo, hi);
+    default:
+      return c[0] <= 0.0 ? std::optional<double>(lo) : std::nullopt;
   }
-  return std::nullopt;
 }
 
 }  // namespace fragsim
