@@ -8,3 +8,4 @@ scripts/setup.sh release
 ctest --preset release -j"$jobs"
 scripts/setup.sh asan
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j"$jobs"
+scripts/fuzz.sh 60
