@@ -8,25 +8,7 @@ cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 
 # clang and its libFuzzer/sanitizer runtimes, installed as scripts/setup.sh installs the rest.
-packages=(clang libclang-rt-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ "${#missing[@]}" -gt 0 ]; then
-  if [ "$(id -u)" -eq 0 ]; then
-    sudo=()
-  elif command -v sudo >/dev/null 2>&1; then
-    sudo=(sudo)
-  else
-    echo "fuzz: missing packages (${missing[*]}) and neither root nor sudo to install them" >&2
-    exit 1
-  fi
-  echo "fuzz: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo[@]}" apt-get update -qq
-  "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+scripts/install_packages.sh clang libclang-rt-dev
 
 scripts/setup.sh fuzz  # the project's other packages, then configure and build the fuzz preset
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "run_fragsim.hpp"
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -9,21 +11,9 @@
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
+using fragsim::test::Result;
 Result fragsim(const std::string& args) {
-  const std::string cmd = std::string(FRAGSIM_BINARY) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.out += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
+  return fragsim::test::run_fragsim(args);
 }
 
 int lines(const std::string& s) {

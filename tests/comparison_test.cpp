@@ -149,8 +149,8 @@ std::uint64_t fnv1a(const std::string& bytes) {
 // the constant (and the README's table) in the same commit.
 TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
-  const std::vector<std::string> all{"none", "wall", "deflect-all", "near-plane", "edge",
-                                     "edge-min"};
+  const std::vector<std::string> all{"none",       "wall", "deflect-all",
+                                     "near-plane", "edge", "edge-min"};
   const std::string csv = summary_csv(scene, compare(scene, all, true, nullptr, 2));
   EXPECT_EQ(fnv1a(csv), 0xc9daf5bd1f5f9e15ull) << csv;
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "run_fragsim.hpp"
+
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
@@ -452,21 +454,9 @@ TEST(ContactSheet, DefaultStepsAndCellsAreTheFrames) {
 
 // --- The executable -----------------------------------------------------------------------------
 
-struct Result {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
+using test::Result;
 Result fragsim(const std::string& args) {
-  const std::string cmd = std::string(FRAGSIM_BINARY) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.out += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
+  return test::run_fragsim(args);
 }
 
 std::string read_all(const fs::path& p) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "run_fragsim.hpp"
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -209,21 +211,9 @@ TEST(SweepSummary, SummaryCellsAreSummaryCsvRows) {
 
 // ---- The command end to end. ----
 
-struct Result {
-  int status = -1;
-  std::string out;  // stdout and stderr together
-};
-
+using test::Result;
 Result fragsim(const std::string& args) {
-  const std::string cmd = std::string(FRAGSIM_BINARY) + " " + args + " 2>&1";
-  Result r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), pipe)) r.out += buf.data();
-  const int raw = pclose(pipe);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return r;
+  return test::run_fragsim(args);
 }
 
 std::string read_file(const std::string& path) {

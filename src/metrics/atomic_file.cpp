@@ -47,7 +47,7 @@ extern "C" void on_interrupt(int sig) {
 }  // namespace
 
 void remove_temporaries_on_interrupt() {
-  struct sigaction action{};
+  struct sigaction action {};
   action.sa_handler = &on_interrupt;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);

@@ -272,10 +272,11 @@ const std::vector<KeySpec>& keys() {
     t.push_back(real(
         "object.size_m", "m; edge of the cube", [](Scene& s) -> double& { return s.object.size_m; },
         open_closed(0, 1000)));
-    t.push_back(real("object.distance_m",
-                     "m; if > 0, the cube is moved along the line from the camera's first "
-                     "waypoint through centre_m to this distance from it (0: centre_m as is)",
-                     [](Scene& s) -> double& { return s.object.distance_m; }, closed(0, 1e6)));
+    t.push_back(real(
+        "object.distance_m",
+        "m; if > 0, the cube is moved along the line from the camera's first "
+        "waypoint through centre_m to this distance from it (0: centre_m as is)",
+        [](Scene& s) -> double& { return s.object.distance_m; }, closed(0, 1e6)));
     t.push_back(integer(
         "object.splits", "pieces per axis; splits^3 fragments",
         [](Scene& s) -> int& { return s.object.splits; }, 1, 64));
@@ -395,10 +396,12 @@ const std::vector<KeySpec>& keys() {
         "edge.replan", "never | contact | always; which non-candidates are re-examined",
         [](Scene& s) -> Replan& { return s.edge.replan; }, replans));
     // [edge-min]
-    t.push_back(real("edge-min.margin_m", "m; clearance kept beyond the protected rectangle's edge",
-                     [](Scene& s) -> double& { return s.edge_min.margin_m; }, closed(0, 100)));
-    t.push_back(real("edge-min.a_max_mps2", "m/s^2; cap on the imposed acceleration",
-                     [](Scene& s) -> double& { return s.edge_min.a_max_mps2; }, closed(0, 1e9)));
+    t.push_back(real(
+        "edge-min.margin_m", "m; clearance kept beyond the protected rectangle's edge",
+        [](Scene& s) -> double& { return s.edge_min.margin_m; }, closed(0, 100)));
+    t.push_back(real(
+        "edge-min.a_max_mps2", "m/s^2; cap on the imposed acceleration",
+        [](Scene& s) -> double& { return s.edge_min.a_max_mps2; }, closed(0, 1e9)));
     // [metrics]
     t.push_back(integer(
         "metrics.grid_width_px", "pixels across the occlusion raster (height from camera.aspect)",

@@ -14,8 +14,8 @@ struct RunTotals {
   int steps = 0;
   double physics_s = 0.0;
   double strategy_s = 0.0;
-  double wall_s = 0.0;  // the whole run, observers included
-  long ode_messages = 0;       // warnings ODE printed during the run
+  double wall_s = 0.0;          // the whole run, observers included
+  long ode_messages = 0;        // warnings ODE printed during the run
   int nonfinite_fragments = 0;  // fragments whose state became NaN or infinite (then frozen)
 };
 

@@ -16,7 +16,9 @@ namespace {
 // be counted process-wide; runs read the counter before and after (World::ode_messages).
 std::atomic<long> g_ode_messages{0};
 
-void count_message(int, const char*, va_list) { ++g_ode_messages; }
+void count_message(int, const char*, va_list) {
+  ++g_ode_messages;
+}
 
 // ODE exits (errors) or aborts (debug checks) after its hook returns: say what happened first, as
 // one line, in fragsim's voice.
@@ -138,8 +140,8 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   w.fragment_collisions = scene.sim.fragment_collisions;
   // A wall joins every fragment touching it into one island, and the exact solver is cubic in an
   // island's size (341 fragments on the wall: 3.6 s for one step, 0.011 s with QuickStep).
-  w.exact_solver = scene.sim.solver == Solver::kExact ||
-                   (scene.sim.uses_exact_solver() && !needs.camera_wall);
+  w.exact_solver =
+      scene.sim.solver == Solver::kExact || (scene.sim.uses_exact_solver() && !needs.camera_wall);
   w.ground = scene.ground;
   w.wall = needs.camera_wall;
   w.world = dWorldCreate();
@@ -279,7 +281,9 @@ int World::wall_contacts() const {
   return impl_->wall_contact_count;
 }
 
-long World::ode_messages() { return g_ode_messages.load(); }
+long World::ode_messages() {
+  return g_ode_messages.load();
+}
 
 std::string World::ode_version() {
 #ifdef FRAGSIM_ODE_VERSION

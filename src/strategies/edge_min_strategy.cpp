@@ -137,8 +137,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                                      least_accel(x, half_w_m + r, +1, in_yz, ctx.dt_s),
                                      least_accel(x, half_w_m + r, -1, in_yz, ctx.dt_s)};
     const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-    const auto best = static_cast<std::size_t>(std::min_element(need.begin(), need.end()) -
-                                               need.begin());
+    const auto best =
+        static_cast<std::size_t>(std::min_element(need.begin(), need.end()) - need.begin());
     // Already inside the box's shadow on every side: nothing finite helps; push toward the
     // nearest way out at the cap and let the report count it if it still hits.
     const double accel = std::isfinite(need[best]) ? need[best] : 2.0 * params_.a_max_mps2 + 1.0;

@@ -55,8 +55,8 @@ struct EdgeParams {
 // `edge-min` (METHOD.md section 4): the least constant push that takes a fragment just past the
 // nearest edge of the protected rectangle before it arrives. No gain to tune.
 struct EdgeMinParams {
-  double margin_m = 0.05;     // clearance kept beyond the rectangle's edge
-  double a_max_mps2 = 50.0;   // cap on the imposed acceleration (5 g)
+  double margin_m = 0.05;    // clearance kept beyond the rectangle's edge
+  double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
 };
 
 }  // namespace fragsim
