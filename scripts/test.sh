@@ -5,6 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs="$(nproc)"
 scripts/setup.sh release
+scripts/install_packages.sh chromium chromium-driver python3 # the Browser.ReportLoads test
 ctest --preset release -j"$jobs"
 scripts/setup.sh asan
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j"$jobs"

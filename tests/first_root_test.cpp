@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <vector>
 
 namespace fragsim {
 namespace {
@@ -188,6 +189,25 @@ TEST(FirstRoot, FirstNonpositiveAgreesWithRealRoots) {
     }
   }
   EXPECT_GT(entries, 1000);
+}
+
+TEST(FirstRoot, ListedRootsAreRealRoots) {
+  // The allocation-free form (edge-min's inner loop) returns the very same doubles.
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (int n = 0; n < 20000; ++n) {
+    Quartic c{};
+    for (double& x : c) x = normal(rng);
+    if (n % 3 == 0) c[4] = c[3] = 0.0;  // the quadratics edge-min solves
+    const double lo = 2.0 * normal(rng);
+    const double hi = lo + std::abs(3.0 * normal(rng));
+    const std::vector<double> roots = real_roots(c, lo, hi);
+    const RootList list = list_real_roots(c, lo, hi);
+    ASSERT_EQ(std::vector<double>(list.begin(), list.end()), roots) << n;
+  }
+  EXPECT_EQ(
+      list_real_roots({1.0, std::numeric_limits<double>::infinity(), 0.0, 0.0, 0.0}, 0.0, 1.0).n,
+      0u);
 }
 
 }  // namespace

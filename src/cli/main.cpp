@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/bench_command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
@@ -17,6 +18,7 @@
 #include "metrics/evaluation.hpp"
 #include "metrics/process_runner.hpp"
 #include "metrics/trajectory_writer.hpp"
+#include "report/html_report.hpp"
 #include "strategies/registry.hpp"
 
 namespace po = boost::program_options;
@@ -34,17 +36,21 @@ const char* kUsage =
     "  compare  every strategy on the same scene and seed\n"
     "  sweep    scene keys over values and seeds, every combination compared, one CSV file\n"
     "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
+    "  bench    run time against error: step sizes, solvers, predictors, skips vs a reference\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
 
 void add_output_options(po::options_description& own) {
   own.add_options()("csv", po::value<std::string>()->value_name("DIR"),
                     "write summary.csv, steps.csv, camera.csv, timing.csv and config.ini to DIR")(
       "trajectories", "also write DIR/trajectories.csv (one row per fragment per step: large)")(
+      "report", po::value<std::string>()->value_name("DIR"),
+      "write an HTML report to DIR/index.html: table, reading, charts over time, contact sheet "
+      "(DIR/sheet.png), scene settings (runs the strategies in this process)")(
       "force", "overwrite the files of an existing, non-empty DIR")(
       "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
       "jobs", po::value<int>()->value_name("J"),
-      "worker processes for the strategies (default: one per core; --trajectories or --sheet "
-      "run in one)");
+      "worker processes for the strategies (default: one per core; --trajectories, --sheet or "
+      "--report run in one)");
   cli::add_sheet_options(own);
 }
 
@@ -70,6 +76,16 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   } else if (p.options.count("trajectories")) {
     throw UsageError("--trajectories: needs --csv DIR");
   }
+  std::optional<std::string> report_dir;
+  if (p.options.count("report")) {
+    report_dir = p.options["report"].as<std::string>();
+    if (report_dir->empty()) throw UsageError("--report: empty folder name");
+    try {
+      prepare_output_dir(*report_dir, p.options.count("force") > 0);
+    } catch (const std::runtime_error& e) {
+      throw UsageError(std::string("--report: ") + e.what());
+    }
+  }
   const bool occlusion = p.options.count("no-occlusion") == 0;
 
   std::optional<AtomicFile> traj_file;
@@ -85,14 +101,27 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
       throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
     }
   }
+  // The report's contact sheet draws from the same recorder as --sheet (steps may repeat).
+  std::vector<int> recorded_steps = sheet ? sheet->steps : std::vector<int>{};
+  if (report_dir) {
+    const std::vector<int> report_steps = report_sheet_steps(p.scene);
+    recorded_steps.insert(recorded_steps.end(), report_steps.begin(), report_steps.end());
+  }
   std::optional<FrameRecorder> recorder;
-  if (sheet) recorder.emplace(sheet->steps);
+  if (sheet || report_dir) recorder.emplace(recorded_steps);
   cli::ObserverFanOut extra;
   extra.add(traj ? &*traj : nullptr);
   extra.add(recorder ? &*recorder : nullptr);
   const std::vector<Evaluation> runs = compare(p.scene, names, occlusion, extra.or_null(), jobs);
   cli::print_report(p.scene, runs, std::cout);
   if (sheet) cli::write_sheet(*sheet, p.scene, *recorder, names, std::cout);
+  if (report_dir) {
+    const std::vector<std::string> written =
+        write_html_report(*report_dir, p.scene, runs, *recorder);
+    std::cout << "wrote";
+    for (const std::string& f : written) std::cout << " " << f;
+    std::cout << "\n";
+  }
   if (dir) {
     write_comparison_csv(*dir, p.scene, runs);
     if (traj_file) traj_file->commit();
@@ -141,6 +170,7 @@ int main(int argc, char** argv) {
     if (command == "compare") return cmd_compare(args);
     if (command == "sweep") return cli::cmd_sweep(args);
     if (command == "render") return cli::cmd_render(args);
+    if (command == "bench") return cli::cmd_bench(args);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << kUsage;
       return 0;

@@ -27,6 +27,22 @@ struct SimulationDef {
   Solver solver = Solver::kAuto;
   int solver_iterations = 20;  // dWorldQuickStep iterations
 
+  // Skipping work a scene does not need. Both are off by default: they change results by a
+  // little (data/scenes/README.md gives the measured differences), and the pinned default
+  // results are made without them.
+  // ODE's auto-disable: a fragment at rest stops being stepped (its geom still collides, so the
+  // camera's sensor still sees it) until something touches it or a strategy pushes it.
+  bool auto_disable = false;
+  // A fragment at rest, out of view and away from the camera leaves collision detection and
+  // stepping altogether, until it could matter again (a push, or the camera or its wall coming
+  // near).
+  bool cull_resting = false;
+  // "At rest": slower than rest_linear_mps and turning slower than rest_angular_radps for
+  // rest_steps steps in a row while touching something (ODE's auto-disable rule).
+  double rest_linear_mps = 0.01;
+  double rest_angular_radps = 0.01;
+  int rest_steps = 10;
+
   // Without fragment-fragment contacts every island is one fragment and its few contacts, where
   // the exact solver is cheap. It also keeps islands independent: QuickStep draws its constraint
   // shuffle from one global generator, so a push on one fragment would change how every other

@@ -265,6 +265,26 @@ const std::vector<KeySpec>& keys() {
     t.push_back(integer(
         "simulation.solver_iterations", "dWorldQuickStep iterations",
         [](Scene& s) -> int& { return s.sim.solver_iterations; }, 1, 1000));
+    t.push_back(boolean("simulation.auto_disable",
+                        "on|off; ODE's auto-disable: a fragment at rest is no longer stepped "
+                        "until something touches or pushes it",
+                        [](Scene& s) -> bool& { return s.sim.auto_disable; }));
+    t.push_back(boolean("simulation.cull_resting",
+                        "on|off; a fragment at rest, out of view and away from the camera leaves "
+                        "collision detection and stepping until it could matter again",
+                        [](Scene& s) -> bool& { return s.sim.cull_resting; }));
+    t.push_back(real(
+        "simulation.rest_linear_mps",
+        "m/s; at rest: slower than this (and rest_angular_radps) for rest_steps steps while "
+        "touching something",
+        [](Scene& s) -> double& { return s.sim.rest_linear_mps; }, closed(0, 1000)));
+    t.push_back(real(
+        "simulation.rest_angular_radps", "rad/s; at rest: turning slower than this",
+        [](Scene& s) -> double& { return s.sim.rest_angular_radps; }, closed(0, 1000)));
+    t.push_back(integer(
+        "simulation.rest_steps",
+        "steps in a row below both thresholds before a fragment is at rest",
+        [](Scene& s) -> int& { return s.sim.rest_steps; }, 1, 1000000));
     // [object]
     t.push_back(vec3(
         "object.centre_m", "m; centre of the cube",

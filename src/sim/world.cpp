@@ -2,9 +2,11 @@
 
 #include <ode/ode.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <stdexcept>
@@ -62,6 +64,34 @@ void set_pose(dBodyID body, const Eigen::Vector3d& pos, const Eigen::Matrix3d& r
 
 constexpr int kMaxContactsPerPair = 4;
 
+// Slack added to the distance within which the camera (or its wall) wakes a culled fragment.
+constexpr double kWakeMargin_m = 0.05;
+
+// The camera's view volume, to tell whether a sphere may be seen: not wholly behind the eye,
+// beyond the far plane or outside one of the four side planes. The near plane is left out on
+// purpose: the near-plane strategy moves it.
+class ViewVolume {
+ public:
+  explicit ViewVolume(const CameraPose& pose) : pose_(pose) {
+    ty_ = std::tan(0.5 * pose.fovy_deg * kPi / 180.0);
+    tx_ = pose.aspect * ty_;
+    nx_ = std::sqrt(1.0 + tx_ * tx_);
+    ny_ = std::sqrt(1.0 + ty_ * ty_);
+  }
+  bool may_see(const Eigen::Vector3d& centre_m, double radius_m) const {
+    const Eigen::Vector3d c = pose_.to_camera(centre_m);  // x right, y up, z depth
+    if (c.z() + radius_m < 0.0 || c.z() - radius_m > pose_.far_m) return false;
+    // Signed distance from a side plane through the eye, e.g. (|x| - tx z) / sqrt(1 + tx^2).
+    if ((std::abs(c.x()) - tx_ * c.z()) / nx_ > radius_m) return false;
+    return (std::abs(c.y()) - ty_ * c.z()) / ny_ <= radius_m;
+  }
+
+ private:
+  CameraPose pose_;
+  double tx_ = 0.0, ty_ = 0.0;  // tangents of the half angles across and up
+  double nx_ = 0.0, ny_ = 0.0;  // lengths of the side planes' unnormalised normals
+};
+
 }  // namespace
 
 struct World::Impl {
@@ -70,6 +100,7 @@ struct World::Impl {
   dSpaceID static_space = nullptr;
   dJointGroupID contacts = nullptr;
   std::vector<dBodyID> bodies;
+  std::vector<dGeomID> geoms;
   std::vector<GeomTag> fragment_tags;  // stable addresses: sized once
   GeomTag ground_tag{GeomKind::kGround, -1};
   GeomTag sensor_tag{GeomKind::kCameraSensor, -1};
@@ -86,6 +117,88 @@ struct World::Impl {
   bool exact_solver = false;
   GroundDef ground;
 
+  // Skips (simulation.auto_disable, simulation.cull_resting).
+  bool auto_disable = false;
+  bool cull_resting = false;
+  // A sleeping fragment's contact with the ground is only used if ODE wakes the fragment while it
+  // builds islands, through a contact with an awake fragment or the wall; without either, the
+  // contact can be left out (ODE would skip it).
+  bool skip_sleeping_ground = false;
+  double rest_linear2_mps2 = 0.0;  // squared thresholds
+  double rest_angular2_radps2 = 0.0;
+  int rest_steps = 0;
+  std::vector<int> rest_count;  // steps in a row at rest
+  std::vector<char> culled;
+  int culled_total = 0;
+  CameraPose camera;  // as placed for the coming step
+  bool camera_placed = false;
+  // A culled fragment whose bounding sphere comes this close to the eye (plus its radius) is
+  // woken: the camera body's, or the wall's, farthest point from the eye.
+  double wake_radius_m = 0.0;
+
+  bool asleep(std::size_t i) const { return !culled[i] && !dBodyIsEnabled(bodies[i]); }
+
+  void cull(std::size_t i) {
+    culled[i] = 1;
+    ++culled_total;
+    dBodyDisable(bodies[i]);
+    // As ODE's auto-disable does: a body that does not move reports no speed (a strategy would
+    // otherwise see a frozen fragment creeping at up to rest_linear_mps).
+    dBodySetLinearVel(bodies[i], 0.0, 0.0, 0.0);
+    dBodySetAngularVel(bodies[i], 0.0, 0.0, 0.0);
+    // With fragment collisions the geom must stay: another fragment must not pass through it
+    // (ODE wakes the body on such a contact).
+    if (!fragment_collisions) dGeomDisable(geoms[i]);
+  }
+  void uncull(std::size_t i) {
+    culled[i] = 0;
+    --culled_total;
+    dGeomEnable(geoms[i]);
+    dBodyEnable(bodies[i]);
+    rest_count[i] = 0;
+  }
+
+  bool near_camera(std::size_t i) const {
+    const dReal* p = dBodyGetPosition(bodies[i]);
+    const Eigen::Vector3d d = Eigen::Vector3d(p[0], p[1], p[2]) - camera.eye_m;
+    const double reach = wake_radius_m + constant[i].radius_m + kWakeMargin_m;
+    return d.squaredNorm() <= reach * reach;
+  }
+
+  // Before collision detection, with the camera placed for the coming step: wakes culled
+  // fragments the camera or the wall could touch now, culls resting ones out of view and reach.
+  void update_culling() {
+    if (!camera_placed) return;
+    const ViewVolume view(camera);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (culled[i]) {
+        if (near_camera(i)) uncull(i);
+        continue;
+      }
+      const bool resting = rest_count[i] >= rest_steps || !dBodyIsEnabled(bodies[i]);
+      if (!resting || near_camera(i)) continue;
+      const dReal* p = dBodyGetPosition(bodies[i]);
+      if (view.may_see({p[0], p[1], p[2]}, constant[i].radius_m)) continue;
+      cull(i);
+    }
+  }
+
+  // After a step: counts the steps each awake fragment has been at rest.
+  void count_rest() {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (culled[i]) {
+        if (!dBodyIsEnabled(bodies[i])) continue;
+        uncull(i);  // ODE woke it: a fragment hit it (fragment collisions)
+      }
+      if (!dBodyIsEnabled(bodies[i])) continue;  // asleep: still at rest
+      const dReal* v = dBodyGetLinearVel(bodies[i]);
+      const dReal* a = dBodyGetAngularVel(bodies[i]);
+      const bool slow = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= rest_linear2_mps2 &&
+                        a[0] * a[0] + a[1] * a[1] + a[2] * a[2] <= rest_angular2_radps2;
+      rest_count[i] = touched[i] && slow ? std::min(rest_count[i] + 1, rest_steps) : 0;
+    }
+  }
+
   static void near_callback(void* data, dGeomID a, dGeomID b) {
     static_cast<Impl*>(data)->on_pair(a, b);
   }
@@ -98,6 +211,9 @@ struct World::Impl {
       std::swap(ta, tb);
     }
     if (ta->kind != GeomKind::kFragment) return;  // two static geoms: never
+    if (tb->kind == GeomKind::kGround && skip_sleeping_ground && !dBodyIsEnabled(dGeomGetBody(a))) {
+      return;
+    }
     std::array<dContact, kMaxContactsPerPair> contact{};
     if (tb->kind == GeomKind::kCameraSensor) {
       // A sensor: record the touch, let the fragment pass through.
@@ -150,6 +266,20 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dWorldSetQuickStepNumIterations(w.world, scene.sim.solver_iterations);
   dWorldSetContactSurfaceLayer(w.world, 0.001);
   dWorldSetContactMaxCorrectingVel(w.world, 10.0);
+  // Bodies copy the world's auto-disable settings when they are created: set them first.
+  const SimulationDef& sim = scene.sim;
+  w.auto_disable = sim.auto_disable;
+  w.cull_resting = sim.cull_resting;
+  w.skip_sleeping_ground = sim.auto_disable && !sim.fragment_collisions && !needs.camera_wall;
+  w.rest_linear2_mps2 = sim.rest_linear_mps * sim.rest_linear_mps;
+  w.rest_angular2_radps2 = sim.rest_angular_radps * sim.rest_angular_radps;
+  w.rest_steps = sim.rest_steps;
+  dWorldSetAutoDisableFlag(w.world, sim.auto_disable ? 1 : 0);
+  dWorldSetAutoDisableLinearThreshold(w.world, sim.rest_linear_mps);
+  dWorldSetAutoDisableAngularThreshold(w.world, sim.rest_angular_radps);
+  dWorldSetAutoDisableSteps(w.world, sim.rest_steps);
+  dWorldSetAutoDisableTime(w.world, 0.0);
+  dWorldSetAutoDisableAverageSamplesCount(w.world, 1);
   // Fragments only ever collide through the fragment space; a simple space when pairs are never
   // tested (it is only walked by dSpaceCollide2), sweep-and-prune when they are.
   w.fragment_space = scene.sim.fragment_collisions
@@ -162,8 +292,11 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   w.fragment_tags.resize(n);
   w.bodies.reserve(n);
   w.constant.resize(n);
+  w.geoms.reserve(n);
   w.touched.assign(n, 0);
   w.hit_flag.assign(n, 0);
+  w.rest_count.assign(n, 0);
+  w.culled.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const FragmentSpawn& s = spawns[i];
     dBodyID body = dBodyCreate(w.world);
@@ -180,6 +313,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
     w.fragment_tags[i] = GeomTag{GeomKind::kFragment, static_cast<int>(i)};
     dGeomSetData(geom, &w.fragment_tags[i]);
     w.bodies.push_back(body);
+    w.geoms.push_back(geom);
     FragmentState& c = w.constant[i];
     c.half_extents_m = s.half_extents_m;
     c.mass_kg = s.mass_kg;
@@ -193,12 +327,19 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   const Eigen::Vector3d& body = scene.camera.body_size_m;
   w.camera_body = dBodyCreate(w.world);
   dBodySetKinematic(w.camera_body);
+  // A still camera would otherwise fall asleep; so would the wall, which must wake what it meets.
+  dBodySetAutoDisableFlag(w.camera_body, 0);
+  w.wake_radius_m = 0.5 * body.norm();
   dGeomID sensor = dCreateBox(w.static_space, body.x(), body.y(), body.z());
   dGeomSetBody(sensor, w.camera_body);
   dGeomSetData(sensor, &w.sensor_tag);
   if (w.wall) {
     w.wall_body = dBodyCreate(w.world);
     dBodySetKinematic(w.wall_body);
+    dBodySetAutoDisableFlag(w.wall_body, 0);
+    const Eigen::Vector3d half(0.5 * w.wall->width_m, 0.5 * w.wall->height_m,
+                               0.5 * w.wall->thickness_m);
+    w.wake_radius_m = std::max(w.wake_radius_m, w.wall->distance_m + half.norm());
     dGeomID wall =
         dCreateBox(w.static_space, w.wall->width_m, w.wall->height_m, w.wall->thickness_m);
     dGeomSetBody(wall, w.wall_body);
@@ -240,6 +381,8 @@ void World::read(std::vector<FragmentState>& out) const {
 
 void World::set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_mps) {
   Impl& w = *impl_;
+  w.camera = pose;
+  w.camera_placed = true;
   const Eigen::Matrix3d rot = pose.rotation();
   set_pose(w.camera_body, pose.eye_m, rot);
   dBodySetLinearVel(w.camera_body, velocity_mps.x(), velocity_mps.y(), velocity_mps.z());
@@ -250,15 +393,30 @@ void World::set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_m
 }
 
 void World::add_forces(std::span<const AppliedForce> forces) {
+  Impl& w = *impl_;
   for (const AppliedForce& f : forces) {
-    dBodyAddForce(impl_->bodies[static_cast<std::size_t>(f.fragment)], f.force_N.x(), f.force_N.y(),
-                  f.force_N.z());
+    const auto i = static_cast<std::size_t>(f.fragment);
+    // A disabled body ignores forces: wake it first.
+    if (w.culled[i]) {
+      w.uncull(i);
+    } else if (!dBodyIsEnabled(w.bodies[i])) {
+      dBodyEnable(w.bodies[i]);
+    }
+    dBodyAddForce(w.bodies[i], f.force_N.x(), f.force_N.y(), f.force_N.z());
   }
 }
 
 void World::step(double dt_s) {
   Impl& w = *impl_;
-  std::fill(w.touched.begin(), w.touched.end(), 0);
+  if (w.cull_resting) w.update_culling();
+  if (w.auto_disable || w.cull_resting) {
+    // A sleeping or culled fragment keeps the contact flag it had when it came to rest.
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+      if (dBodyIsEnabled(w.bodies[i])) w.touched[i] = 0;
+    }
+  } else {
+    std::fill(w.touched.begin(), w.touched.end(), 0);
+  }
   for (int i : w.hits) w.hit_flag[static_cast<std::size_t>(i)] = 0;
   w.hits.clear();
   w.wall_contact_count = 0;
@@ -272,6 +430,23 @@ void World::step(double dt_s) {
   }
   dJointGroupEmpty(w.contacts);
   std::sort(w.hits.begin(), w.hits.end());
+  if (w.cull_resting) w.count_rest();
+}
+
+FragmentActivity World::activity(int fragment) const {
+  const auto i = static_cast<std::size_t>(fragment);
+  if (impl_->culled[i]) return FragmentActivity::kCulled;
+  return impl_->asleep(i) ? FragmentActivity::kAsleep : FragmentActivity::kAwake;
+}
+
+int World::awake_count() const {
+  int n = 0;
+  for (dBodyID b : impl_->bodies) n += dBodyIsEnabled(b) ? 1 : 0;
+  return n;
+}
+
+int World::culled_count() const {
+  return impl_->culled_total;
 }
 
 const std::vector<int>& World::camera_hits() const {

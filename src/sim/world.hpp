@@ -16,6 +16,15 @@
 
 namespace fragsim {
 
+// What ODE does with a fragment this step.
+enum class FragmentActivity {
+  kAwake,   // stepped and collided
+  kAsleep,  // at rest, disabled by ODE's auto-disable: not stepped, its geom still collides
+  // At rest, out of view and away from the camera: neither stepped nor collided (with fragment
+  // collisions its geom stays, so that other fragments still meet it and wake it).
+  kCulled,
+};
+
 class World {
  public:
   World(const Scene& scene, const WorldNeeds& needs, const std::vector<FragmentSpawn>& spawns);
@@ -32,9 +41,15 @@ class World {
 
   // Places the camera (and the wall, if any) for the coming step.
   void set_camera(const CameraPose& pose, const Eigen::Vector3d& velocity_mps);
+  // Wakes a sleeping or culled fragment before pushing it.
   void add_forces(std::span<const AppliedForce> forces);
-  // Collision detection and one dWorldQuickStep.
+  // Culling (simulation.cull_resting), collision detection and one ODE step.
   void step(double dt_s);
+
+  FragmentActivity activity(int fragment) const;
+  // Fragments ODE steps (neither asleep nor culled).
+  int awake_count() const;
+  int culled_count() const;
 
   // Fragments that touched the camera's sensor volume in the last step (each once, ascending).
   const std::vector<int>& camera_hits() const;

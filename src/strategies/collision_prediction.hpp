@@ -4,9 +4,12 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "sim/camera_pose.hpp"
 #include "sim/fragment_state.hpp"
+#include "strategies/cheap_rejection.hpp"
 #include "strategies/first_root.hpp"
 #include "strategies/strategy_params.hpp"
 
@@ -48,9 +51,58 @@ struct ReachModel {
   double radius_m = 0.0;       // camera body plus fragment: the ball never shrinks below this
 };
 
-// Whether the path is inside, or enters, the camera's reachable ball within [0, t_horizon].
+// Whether the path is inside, or enters, the camera's reachable ball within [0, t_horizon]:
+// the cheap rejection (path_clears_ball), then solve_contact.
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                                   const ReachModel& model, double t_horizon_s);
+
+// predict_contact without the cheap rejection in front: for paths it left in doubt.
+ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
+                                const ReachModel& model, double t_horizon_s);
+
+// What `edge` asks of each fragment it examines: the path its predictor believes in, t_G (never
+// past the scene's end) and the contact with the ball the camera can reach.
+struct ContactQuery {
+  Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
+  Predictor predictor = Predictor::kThesis;
+  double dt_s = 0.0;
+  double y_ref_m = 0.0;      // the height whose downward crossing is t_G
+  double remaining_s = 0.0;  // scene time left: t_G's fallback and cap
+  Reach reach = Reach::kThesis;
+  double max_speed_mps = 0.0;  // V_c
+  double body_radius_m = 0.0;  // the camera body's; each fragment adds its own
+
+  BallisticPath path(const FragmentState& f) const {
+    return predicted_path(f, gravity_mps2, predictor, dt_s);
+  }
+  double t_horizon_s(const BallisticPath& p) const;
+  ReachModel model(const FragmentState& f) const {
+    return {reach, max_speed_mps, body_radius_m + f.radius_m};
+  }
+  // predict_contact(path(f), camera_m, model(f), t_horizon_s(path(f))).
+  ContactPrediction predict(const FragmentState& f) const;
+};
+
+// ContactQuery::predict for many fragments, with the same answers: the cheap rejection runs first
+// over them as batched passes (BallClearance), the solve only on those left in doubt.
+class ContactPredictor {
+ public:
+  // One prediction per index in `which`, in order; valid until the next call. `screen`, when not
+  // empty, says per index whether the cheap rejection is worth trying first: not for a fragment
+  // that was a candidate a step ago and almost surely still is (the answer is the same either way).
+  std::span<const ContactPrediction> predict(const ContactQuery& query,
+                                             std::span<const FragmentState> fragments,
+                                             std::span<const int> which,
+                                             std::span<const char> screen = {});
+
+ private:
+  BallClearance clearance_;
+  std::vector<int> screened_;  // positions in `which` that go through the rejection
+  // Of the screened fragments: the path's velocity and height, the radius, t_G.
+  std::vector<double> vy_, py_, radius_, t_horizon_;
+  std::vector<ContactPrediction> out_;
+};
 
 // Where a path relative to the camera (moving at camera_velocity) first reaches the near plane,
 // in near-plane coordinates (x right, y up, metres). Nothing if it never does within horizon_s.
@@ -61,5 +113,18 @@ std::optional<Eigen::Vector2d> near_plane_crossing(const BallisticPath& path,
 
 // Unit world direction perpendicular to the near rectangle's edge nearest to `point`, outward.
 Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Vector2d& point);
+// The same, with the rectangle's half sizes computed once (camera.near_half_width_m(), ...).
+Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Vector2d& point,
+                                       double half_width_m, double half_height_m);
+
+// `edge`'s push direction: nearest_edge_direction at the point near_plane_crossing gives, or at
+// `now_m` (the fragment's position) when there is no crossing. The same answer, found mostly
+// without a root search: the depth is a quadratic, crossed where its closed-form root says; only
+// a case near a decision (a root close to 0, the horizon or a double root, a point close to an
+// axis or to the rectangle's diagonals) is handed to near_plane_crossing.
+Eigen::Vector3d crossing_edge_direction(const BallisticPath& path, const CameraPose& camera,
+                                        const Eigen::Vector3d& camera_velocity_mps,
+                                        double horizon_s, const Eigen::Vector3d& now_m,
+                                        double half_width_m, double half_height_m);
 
 }  // namespace fragsim

@@ -41,7 +41,7 @@ Intervals within(const Coord& c, double lo, double hi, double horizon) {
   add(0.0);
   add(horizon);
   for (double bound : {lo, hi}) {
-    for (double r : real_roots({c.c0 - bound, c.c1, c.c2, 0.0, 0.0}, 0.0, horizon)) {
+    for (double r : list_real_roots({c.c0 - bound, c.c1, c.c2, 0.0, 0.0}, 0.0, horizon)) {
       if (np < static_cast<int>(pts.size())) add(r);
     }
   }
@@ -109,7 +109,22 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double horizon_s = std::max(ctx.duration_s - ctx.t_s, ctx.dt_s);
   const Eigen::Vector3d half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
 
-  for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
+  // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
+  // that never has all three coordinates inside the box grown by the fragment's radius, with a
+  // margin the solves below agree with, is no threat. Most fragments end here.
+  const std::size_t n = ctx.fragments.size();
+  clearance_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const FragmentState& f = ctx.fragments[i];
+    clearance_.set(i, f.position_m, f.velocity_mps, f.radius_m);
+  }
+  const BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
+  const std::span<const char> clears =
+      clearance_.run(frame, half_g, Eigen::Vector3d(-half_w_m, -half_h_m, -back_m),
+                     Eigen::Vector3d(half_w_m, half_h_m, front_m), horizon_s);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (clears[i]) continue;
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
     const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);

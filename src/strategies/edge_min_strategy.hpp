@@ -13,6 +13,7 @@
 // still hits a camera body wider than that rectangle, and debris falling onto the camera from
 // above never crosses the near plane at all.
 
+#include "strategies/cheap_rejection.hpp"
 #include "strategies/strategy.hpp"
 #include "strategies/strategy_params.hpp"
 
@@ -34,6 +35,7 @@ class EdgeMinStrategy final : public Strategy {
 
  private:
   EdgeMinParams params_;
+  BoxClearance clearance_;  // work space kept between steps; holds no state of the run
 };
 
 }  // namespace fragsim

@@ -26,6 +26,11 @@ class EdgeStrategy final : public Strategy {
   EdgeParams params_;
   std::vector<char> candidate_;  // examined again next step
   std::vector<char> pushed_;     // got a force in the last step
+  std::vector<char> predicted_;  // was a candidate by the last prediction (not just by reset)
+  // Work space, kept between steps to save allocations; holds no state of the run.
+  std::vector<int> examined_;
+  std::vector<char> screen_;
+  ContactPredictor predictor_;
 };
 
 }  // namespace fragsim

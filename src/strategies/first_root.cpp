@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 
 namespace fragsim {
 namespace {
@@ -306,26 +307,31 @@ double evaluate(const Quartic& c, double x) {
 }
 
 std::vector<double> real_roots(const Quartic& c, double lo, double hi) {
-  if (!usable(c, lo, hi)) return {};
-  Points r;
-  std::size_t n = 0;
+  const RootList r = list_real_roots(c, lo, hi);
+  return {r.begin(), r.end()};
+}
+
+RootList list_real_roots(const Quartic& c, double lo, double hi) {
+  static_assert(std::tuple_size_v<decltype(RootList::x)> == kCapacity);
+  RootList r;
+  if (!usable(c, lo, hi)) return r;
   switch (degree(c)) {
     case 1:
-      n = real_roots_of<1>(c, lo, hi, r);
+      r.n = real_roots_of<1>(c, lo, hi, r.x);
       break;
     case 2:
-      n = real_roots_of<2>(c, lo, hi, r);
+      r.n = real_roots_of<2>(c, lo, hi, r.x);
       break;
     case 3:
-      n = real_roots_of<3>(c, lo, hi, r);
+      r.n = real_roots_of<3>(c, lo, hi, r.x);
       break;
     case 4:
-      n = real_roots_of<4>(c, lo, hi, r);
+      r.n = real_roots_of<4>(c, lo, hi, r.x);
       break;
     default:
       break;  // a constant: no isolated roots (all or none)
   }
-  return {r.begin(), r.begin() + static_cast<std::ptrdiff_t>(n)};
+  return r;
 }
 
 std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi) {

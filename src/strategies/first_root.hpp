@@ -28,6 +28,15 @@ double evaluate(const Quartic& c, double x);
 // Nothing when lo > hi or an input is not finite.
 std::vector<double> real_roots(const Quartic& c, double lo, double hi);
 
+// real_roots without allocating, for hot loops: the same roots in a fixed array.
+struct RootList {
+  std::array<double, 8> x{};  // room for every root the search can report
+  std::size_t n = 0;
+  const double* begin() const { return x.data(); }
+  const double* end() const { return x.data() + n; }
+};
+RootList list_real_roots(const Quartic& c, double lo, double hi);
+
 // The smallest x in [lo, hi] with p(x) <= 0 (lo itself if p(lo) <= 0), or nothing if p > 0 on
 // the whole interval. "p <= 0" is judged with a tolerance of 4 eps size(x), so a tangent touch
 // counts. Nothing when lo > hi or an input is not finite (the caller's state checks report that).

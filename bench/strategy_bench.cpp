@@ -1,0 +1,210 @@
+// The cost of the strategies' per-step work (project issue 6): the thesis's prediction per
+// fragment at t = 0, with and without the cheap rejection, on an aimed blast (front.ini) and on
+// undirected ones; and one whole step of `edge` and `edge-min` at t = 0 and at a later step.
+// Run: build/release/bench/fragsim_bench --benchmark_filter='Predict|StrategyStep|BM_Run'
+// --benchmark_repetitions=5 --benchmark_report_aggregates_only
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include "sim/explosion.hpp"
+#include "sim/scene_file.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/collision_prediction.hpp"
+#include "strategies/edge_min_strategy.hpp"
+#include "strategies/edge_strategy.hpp"
+
+namespace {
+
+using fragsim::FragmentState;
+using fragsim::Scene;
+
+enum class SceneKind { kAimed, kUndirected, kThesis1000 };
+
+// The aimed default scene; the same cube blown up without the push toward the camera; and the
+// thesis's 1000-fragment scene (fig. 4.3).
+Scene scene_of(SceneKind kind, int splits = 0) {
+  Scene s =
+      fragsim::load_scene(kind == SceneKind::kThesis1000 ? FRAGSIM_DATA_DIR "/scenes/thesis1000.ini"
+                                                         : FRAGSIM_DATA_DIR "/scenes/front.ini");
+  if (kind == SceneKind::kUndirected) s.explosion.toward_camera_mps = 0.0;
+  if (splits > 0) s.object.splits = splits;
+  return s;
+}
+
+// What `edge` asks of each fragment at t = 0 (edge_strategy.cpp): the path, t_G and the contact
+// with the reachable ball, for all fragments of the scene or for those the exact solve calls
+// candidates or not. `exact` runs the solve alone, without the cheap rejection.
+fragsim::ContactQuery query_at_start(const Scene& scene) {
+  fragsim::ContactQuery q;
+  q.camera_m = scene.camera.waypoints_m.front();
+  q.gravity_mps2 = scene.sim.gravity_mps2;
+  q.predictor = scene.edge.predictor;
+  q.dt_s = scene.sim.dt_s;
+  q.y_ref_m =
+      scene.edge.horizon == fragsim::Horizon::kCamera ? q.camera_m.y() : scene.ground.height_m;
+  q.remaining_s = scene.sim.duration_s;
+  q.reach = scene.edge.reach;
+  q.max_speed_mps = scene.camera.max_speed_mps;
+  q.body_radius_m = (0.5 * scene.camera.body_size_m).norm();
+  return q;
+}
+
+std::vector<FragmentState> fragments_at_start(const Scene& scene) {
+  std::vector<FragmentState> out;
+  for (const auto& sp : fragsim::explode(scene)) {
+    FragmentState f;
+    f.position_m = sp.position_m;
+    f.velocity_mps = sp.velocity_mps;
+    f.radius_m = sp.half_extents_m.norm();  // the box's bounding sphere, as the world sets it
+    out.push_back(f);
+  }
+  return out;
+}
+
+bool exact_candidate(const fragsim::ContactQuery& q, const FragmentState& f) {
+  const fragsim::BallisticPath p = q.path(f);
+  return fragsim::solve_contact(p, q.camera_m, q.model(f), q.t_horizon_s(p)).candidate;
+}
+
+enum class Subset { kAll, kRejected, kCandidates };
+
+// ns per fragment over the chosen subset (classified by the exact solve).
+void BM_Predict(benchmark::State& state, SceneKind kind, Subset subset, bool exact) {
+  const Scene scene = scene_of(kind);
+  const fragsim::ContactQuery query = query_at_start(scene);
+  const std::vector<FragmentState> fragments = fragments_at_start(scene);
+  std::vector<int> which;
+  int true_candidates = 0;
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    const bool c = exact_candidate(query, fragments[i]);
+    true_candidates += c ? 1 : 0;
+    if (subset == Subset::kAll || (subset == Subset::kCandidates) == c) {
+      which.push_back(static_cast<int>(i));
+    }
+  }
+  if (which.empty()) {
+    state.SkipWithError("empty subset");
+    return;
+  }
+  fragsim::ContactPredictor predictor;
+  int candidates = 0;
+  for (auto _ : state) {
+    candidates = 0;
+    if (exact) {
+      for (int i : which)
+        candidates += exact_candidate(query, fragments[static_cast<std::size_t>(i)]);
+    } else {
+      for (const auto& p : predictor.predict(query, fragments, which)) candidates += p.candidate;
+    }
+    benchmark::DoNotOptimize(candidates);
+  }
+  const auto n = static_cast<double>(which.size());
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(which.size()));
+  state.counters["fragments"] = n;
+  state.counters["candidates"] = candidates;
+  state.counters["true_candidates_of_all"] = true_candidates;
+  state.counters["all_fragments"] = static_cast<double>(fragments.size());
+  state.counters["s_per_fragment"] = benchmark::Counter(
+      n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+#define PREDICT_BENCH(scene_kind, name)                                                           \
+  BENCHMARK_CAPTURE(BM_Predict, name##_all_rejection, scene_kind, Subset::kAll, false);           \
+  BENCHMARK_CAPTURE(BM_Predict, name##_all_exact, scene_kind, Subset::kAll, true);                \
+  BENCHMARK_CAPTURE(BM_Predict, name##_rejected_rejection, scene_kind, Subset::kRejected, false); \
+  BENCHMARK_CAPTURE(BM_Predict, name##_rejected_exact, scene_kind, Subset::kRejected, true);      \
+  BENCHMARK_CAPTURE(BM_Predict, name##_candidates_rejection, scene_kind, Subset::kCandidates,     \
+                    false);                                                                       \
+  BENCHMARK_CAPTURE(BM_Predict, name##_candidates_exact, scene_kind, Subset::kCandidates, true)
+
+PREDICT_BENCH(SceneKind::kAimed, aimed_front);
+PREDICT_BENCH(SceneKind::kUndirected, undirected_front);
+PREDICT_BENCH(SceneKind::kThesis1000, thesis1000);
+
+// A strategy run up to step `at`, kept as it was just before that step together with the
+// context it is about to see: each benchmark iteration steps a fresh copy of it.
+template <class S>
+class StepCapture final : public fragsim::Strategy {
+ public:
+  StepCapture(S inner, int at, double duration_s)
+      : inner_(std::move(inner)), at_(at), duration_s_(duration_s) {}
+  std::string name() const override { return inner_.name(); }
+  fragsim::WorldNeeds needs() const override { return inner_.needs(); }
+  void reset(int fragment_count) override { inner_.reset(fragment_count); }
+  void step(const fragsim::StepContext& run_ctx, fragsim::StepOutput& out) override {
+    // The run stops after step `at`, but the strategy must see the scene's real length (edge caps
+    // t_G by it), or its candidates would differ from a full run's.
+    fragsim::StepContext ctx = run_ctx;
+    ctx.duration_s = duration_s_;
+    if (ctx.step == at_) {
+      saved_ = std::make_unique<S>(inner_);
+      ctx_ = ctx;
+      states_.assign(ctx.fragments.begin(), ctx.fragments.end());
+      ctx_.fragments = states_;
+    }
+    inner_.step(ctx, out);
+  }
+
+  const S& saved() const { return *saved_; }
+  const fragsim::StepContext& context() const { return ctx_; }
+
+ private:
+  S inner_;
+  int at_;
+  double duration_s_;
+  std::unique_ptr<S> saved_;
+  fragsim::StepContext ctx_;
+  std::vector<FragmentState> states_;
+};
+
+// Stops the run right after step `step`: only the steps up to it are simulated.
+Scene up_to(Scene scene, int step) {
+  scene.sim.duration_s = (step + 1) * scene.sim.dt_s;
+  return scene;
+}
+
+template <class S>
+void BM_StrategyStep(benchmark::State& state, S strategy) {
+  const int splits = static_cast<int>(state.range(0));
+  const int at = static_cast<int>(state.range(1));
+  const Scene full = scene_of(SceneKind::kAimed, splits);
+  StepCapture<S> capture(std::move(strategy), at, full.sim.duration_s);
+  const auto totals = fragsim::simulate(up_to(full, at), capture);
+  const fragsim::StepContext& ctx = capture.context();
+  fragsim::StepOutput out;
+  std::size_t candidates = 0;
+  for (auto _ : state) {
+    // A fresh copy of the strategy as it was before the step (edge's candidates), not timed.
+    state.PauseTiming();
+    S s = capture.saved();
+    out.clear();
+    state.ResumeTiming();
+    s.step(ctx, out);
+    candidates = out.candidates.size();
+    benchmark::DoNotOptimize(out.forces.data());
+  }
+  state.counters["fragments"] = static_cast<double>(ctx.fragments.size());
+  state.counters["candidates"] = static_cast<double>(candidates);
+  state.counters["forces"] = static_cast<double>(out.forces.size());
+  // The physics of the captured run's steps, for a ratio measured in the same process.
+  state.counters["physics_ms_per_step"] = 1e3 * totals.physics_s / totals.steps;
+}
+
+void strategy_args(benchmark::internal::Benchmark* b) {
+  for (int splits : {12, 25}) {
+    for (int at : {0, 30}) b->Args({splits, at});
+  }
+  b->ArgNames({"splits", "step"})->Unit(benchmark::kMicrosecond);
+}
+
+BENCHMARK_CAPTURE(BM_StrategyStep, edge, fragsim::EdgeStrategy(scene_of(SceneKind::kAimed).edge))
+    ->Apply(strategy_args);
+BENCHMARK_CAPTURE(BM_StrategyStep, edge_min,
+                  fragsim::EdgeMinStrategy(scene_of(SceneKind::kAimed).edge_min))
+    ->Apply(strategy_args);
+
+}  // namespace

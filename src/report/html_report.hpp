@@ -1,0 +1,48 @@
+#pragma once
+// The comparison as one HTML page (fragsim compare --report DIR): the scene, a reading of the
+// numbers in prose, the comparison table, the per-step metrics as inline SVG line charts, the
+// contact sheet (DIR/sheet.png, beside the page) and the scene's settings. Nothing is fetched:
+// no script, no font, no stylesheet from elsewhere; the page opens from disk.
+//
+// The page is the same bytes for the same scene and seed: it holds no date and no wall-clock
+// timing (those stay in the terminal report and timing.csv).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "metrics/evaluation.hpp"
+#include "render/frame_recorder.hpp"
+#include "sim/scene.hpp"
+
+namespace fragsim {
+
+// The contact sheet as the page shows it: an image file beside the page.
+struct SheetFigure {
+  std::string file;  // relative to the page: "sheet.png"
+  int width_px = 0;
+  int height_px = 0;
+  std::vector<int> steps;  // the columns
+};
+
+// The steps the report's contact sheet shows (the --sheet default: 10%, 20%, 25% and 35% of the
+// run). Record these with a FrameRecorder during the comparison.
+std::vector<int> report_sheet_steps(const Scene& scene);
+
+// What the numbers say, as plain-text paragraphs (escape them for HTML): what happened without
+// control, which strategy met the thesis's goals (best_for_thesis_goals) and at what cost in
+// deviation and occlusion against `none`, or that none met them.
+std::vector<std::string> report_reading(const std::vector<Evaluation>& runs);
+
+// The whole page. `sheet`: the contact sheet beside it, or nullopt for none.
+std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
+                        const std::optional<SheetFigure>& sheet);
+
+// Draws the contact sheet from `recorder` (rows: the runs' strategies, columns:
+// report_sheet_steps) into DIR/sheet.png, then writes DIR/index.html; each file whole or not at
+// all. DIR must exist (prepare_output_dir). Returns the paths written.
+std::vector<std::string> write_html_report(const std::string& dir, const Scene& scene,
+                                           const std::vector<Evaluation>& runs,
+                                           const FrameRecorder& recorder);
+
+}  // namespace fragsim

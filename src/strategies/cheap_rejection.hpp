@@ -1,0 +1,123 @@
+#pragma once
+// Cheap, conservative tests that settle, before any root solve, that a fragment's ballistic path
+// cannot meet a region: the camera's reachable ball (`edge`, METHOD.md section 3) or the
+// protected box (`edge-min`, section 4). They only ever answer "certainly clear"; anything in
+// doubt goes on to the exact solve, so the strategies' results do not change. Each keeps a margin
+// far beyond the root solver's rounding (first_root.hpp judges "touching" within ~1e-15 of the
+// terms' size): a path these call clear, the exact solve also finds clear.
+//
+// Each test comes twice: for one path, and batched (BallClearance, BoxClearance) with the same
+// answers, as passes over many paths two at a time without a branch on the data inside a pass,
+// so the processor overlaps paths instead of waiting on each one's latency chain.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace fragsim {
+
+// The path relative to the region's centre, x(t) = d + v t + a t^2 (a = g / 2), for t in [0,
+// t_end].
+struct RelativePath {
+  Eigen::Vector3d d_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d a_mps2 = Eigen::Vector3d::Zero();  // half the acceleration
+};
+
+// True when |x(t)| > r0 + growth t for every t in [0, t_end]: the path certainly stays outside
+// the ball (fixed when growth = 0, growing otherwise). Q(t) = |x(t)|^2 - (r0 + growth t)^2 is a
+// quartic; its Bernstein coefficients on an interval bound it there (the convex hull property),
+// so all of them above the margin prove Q > 0. The whole interval first, then halves, quarters
+// and eighths of it (de Casteljau's subdivision), only where still in doubt. False when in doubt
+// (non-finite input, t_end < 0, a path that starts inside or is inside at a piece's end).
+bool path_clears_ball(const RelativePath& path, double r0_m, double growth_mps, double t_end_s);
+
+// path_clears_ball for many paths under one acceleration and one growth.
+class BallClearance {
+ public:
+  // Room for n paths, then each one set by index.
+  void resize(std::size_t n);
+  void set(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps, double r0_m,
+           double t_end_s) {
+    set_path(i, d_m, v_mps);
+    set_ball(i, r0_m, t_end_s);
+  }
+  // The same in two parts, for a caller that knows the ball only after the path.
+  void set_path(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps) {
+    dx_[i] = d_m.x();
+    dy_[i] = d_m.y();
+    dz_[i] = d_m.z();
+    vx_[i] = v_mps.x();
+    vy_[i] = v_mps.y();
+    vz_[i] = v_mps.z();
+  }
+  void set_ball(std::size_t i, double r0_m, double t_end_s) {
+    r0_[i] = r0_m;
+    t_end_[i] = t_end_s;
+  }
+  std::size_t size() const { return size_; }
+  // One flag per path, in order: 1 when it clears its ball. Valid until the next call.
+  std::span<const char> run(const Eigen::Vector3d& a_mps2, double growth_mps);
+
+ private:
+  // A piece of a path in doubt: the path and Q's five Bernstein coefficients on the piece.
+  struct Piece {
+    std::int32_t path;
+    double b[5];
+  };
+  std::size_t size_ = 0;
+  std::vector<double> dx_, dy_, dz_, vx_, vy_, vz_, r0_, t_end_;  // padded to whole lanes
+  std::vector<double> tol_;
+  std::vector<char> clears_;
+  std::vector<Piece> pieces_;
+  std::vector<Piece> next_;
+};
+
+// The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
+// three coordinates inside it: first each coordinate's range over the whole interval (ends and
+// vertex), then the x and y ranges over the times z is inside its slab. False when in doubt.
+bool path_clears_box(const RelativePath& path, const Eigen::Vector3d& lo_m,
+                     const Eigen::Vector3d& hi_m, double t_end_s);
+
+// A moving frame for BoxClearance: paths given in world coordinates are seen from it, x along
+// axes[0], y along axes[1], z along axes[2] (a camera's right, up and forward).
+struct BoxFrame {
+  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
+                             Eigen::Vector3d::UnitZ()};
+  Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();
+};
+
+// path_clears_box for many paths given in world coordinates, seen from one frame, under one
+// acceleration (in the frame's axes), against one box grown per path (by the fragment's radius)
+// and over one interval. A first stage (x's range alone) runs over every path, the full test
+// over those it left in doubt.
+class BoxClearance {
+ public:
+  void resize(std::size_t n);
+  void set(std::size_t i, const Eigen::Vector3d& position_m, const Eigen::Vector3d& velocity_mps,
+           double grow_m) {
+    px_[i] = position_m.x();
+    py_[i] = position_m.y();
+    pz_[i] = position_m.z();
+    vx_[i] = velocity_mps.x();
+    vy_[i] = velocity_mps.y();
+    vz_[i] = velocity_mps.z();
+    grow_[i] = grow_m;
+  }
+  std::size_t size() const { return size_; }
+  // One flag per path: 1 when, in `frame`, it clears lo - grow <= x(t) <= hi + grow. Valid until
+  // the next call.
+  std::span<const char> run(const BoxFrame& frame, const Eigen::Vector3d& a_mps2,
+                            const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
+                            double t_end_s);
+
+ private:
+  std::size_t size_ = 0;
+  std::vector<double> px_, py_, pz_, vx_, vy_, vz_, grow_;  // world, padded to whole lanes
+  std::vector<char> clears_;
+  std::vector<std::int32_t> doubt_;  // paths the first stage left in doubt
+};
+
+}  // namespace fragsim
