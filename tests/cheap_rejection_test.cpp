@@ -351,19 +351,26 @@ TEST(BoxRejection, NeverClearsAPathThatEntersTheBox) {
   EXPECT_GT(cleared, misses * 8 / 10) << cleared << " of " << misses;
 }
 
+FragmentState fragment_at(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double radius) {
+  FragmentState f;
+  f.position_m = p;
+  f.velocity_mps = v;
+  f.radius_m = radius;
+  return f;
+}
+
 TEST(BoxRejection, BatchAnswersAsOnePathAtATime) {
   // Seen from the world frame itself, the batch's paths are the single test's, bit for bit.
   std::mt19937_64 rng(14);
   std::uniform_real_distribution<double> u(0.0, 1.0);
+  BoxClearance batch;  // reused, as edge-min does
   for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{3001}}) {
     Eigen::Vector3d lo;
     Eigen::Vector3d hi;
     double t_end = 0.0;
     std::vector<RelativePath> paths(n);
-    std::vector<double> grow(n);
+    std::vector<FragmentState> fragments(n);
     const Eigen::Vector3d a = 0.5 * 20.0 * u(rng) * random_unit(rng);
-    BoxClearance batch;
-    batch.resize(n);
     const RelativePath first = random_box_path(rng, lo, hi, t_end);  // fixes the box and t_end
     for (std::size_t i = 0; i < n; ++i) {
       Eigen::Vector3d lo_i;
@@ -371,13 +378,12 @@ TEST(BoxRejection, BatchAnswersAsOnePathAtATime) {
       double t_i = 0.0;
       paths[i] = i == 0 ? first : random_box_path(rng, lo_i, hi_i, t_i);
       paths[i].a_mps2 = a;
-      grow[i] = u(rng) < 0.5 ? 0.0 : 0.2 * u(rng);
-      batch.set(i, paths[i].d_m, paths[i].v_mps, grow[i]);
+      fragments[i] = fragment_at(paths[i].d_m, paths[i].v_mps, u(rng) < 0.5 ? 0.0 : 0.2 * u(rng));
     }
-    const auto clears = batch.run(BoxFrame{}, a, lo, hi, t_end);
+    const auto clears = batch.run(fragments, BoxFrame{}, a, lo, hi, t_end);
     ASSERT_EQ(clears.size(), n);
     for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Vector3d g = Eigen::Vector3d::Constant(grow[i]);
+      const Eigen::Vector3d g = Eigen::Vector3d::Constant(fragments[i].radius_m);
       ASSERT_EQ(clears[i] != 0, path_clears_box(paths[i], lo - g, hi + g, t_end)) << i;
     }
   }
@@ -386,16 +392,14 @@ TEST(BoxRejection, BatchAnswersAsOnePathAtATime) {
 TEST(BoxRejection, BatchInAMovingRotatedFrameIsConservative) {
   // A camera-like frame: the batch turns world paths into it; none it clears enters the box.
   std::mt19937_64 rng(15);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   const Eigen::Vector3d forward = random_unit(rng);
   const Eigen::Vector3d right = forward.cross(Eigen::Vector3d::UnitY()).normalized();
   const Eigen::Vector3d up = right.cross(forward);
   const BoxFrame frame{{1.0, 1.6, -2.0}, {right, up, forward}, {0.0, 0.0, -2.0}};
   const Eigen::Vector3d a(0.5 * kG.dot(right), 0.5 * kG.dot(up), 0.5 * kG.dot(forward));
-  const std::size_t n = 20000;
-  BoxClearance batch;
-  batch.resize(n);
+  const std::size_t n = 20001;
   std::vector<RelativePath> local(n);
+  std::vector<FragmentState> fragments(n);
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
   double t_end = 0.0;
@@ -406,13 +410,14 @@ TEST(BoxRejection, BatchInAMovingRotatedFrameIsConservative) {
     double t_i = 0.0;
     local[i] = random_box_path(rng, lo_i, hi_i, t_i);
     local[i].a_mps2 = a;
-    const Eigen::Vector3d world_d = frame.origin_m + local[i].d_m.x() * right +
-                                    local[i].d_m.y() * up + local[i].d_m.z() * forward;
-    const Eigen::Vector3d world_v = frame.velocity_mps + local[i].v_mps.x() * right +
-                                    local[i].v_mps.y() * up + local[i].v_mps.z() * forward;
-    batch.set(i, world_d, world_v, 0.0);
+    const Eigen::Vector3d& d = local[i].d_m;
+    const Eigen::Vector3d& v = local[i].v_mps;
+    fragments[i] =
+        fragment_at(frame.origin_m + d.x() * right + d.y() * up + d.z() * forward,
+                    frame.velocity_mps + v.x() * right + v.y() * up + v.z() * forward, 0.0);
   }
-  const auto clears = batch.run(frame, a, lo, hi, t_end);
+  BoxClearance batch;
+  const auto clears = batch.run(fragments, frame, a, lo, hi, t_end);
   int cleared = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!clears[i]) continue;

@@ -363,19 +363,14 @@ bool path_clears_box(const RelativePath& path, const Eigen::Vector3d& lo_m,
   return lanes::get(clear, 0);
 }
 
-void BoxClearance::resize(std::size_t n) {
-  // Room for a whole number of lane pairs; a spare path is computed and ignored.
-  const std::size_t padded = n + n % lanes::kWidth;
-  for (auto* x : {&px_, &py_, &pz_, &vx_, &vy_, &vz_, &grow_}) x->resize(padded);
-  if (padded > n) set(n, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0);
-  size_ = n;
-}
-
-std::span<const char> BoxClearance::run(const BoxFrame& frame, const Eigen::Vector3d& a_mps2,
+std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments,
+                                        const BoxFrame& frame, const Eigen::Vector3d& a_mps2,
                                         const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
                                         double t_end_s) {
-  const std::size_t padded = px_.size();
-  clears_.resize(padded);
+  const std::size_t n = fragments.size();
+  clears_.resize(n);
+  doubt_.resize(n + 1);
+  if (n == 0) return {};
   const BoxAccel acc = box_accel(a_mps2, lo_m, hi_m, t_end_s);
   const Lanes t_end = lanes::broadcast(t_end_s);
   Lanes lo[3];
@@ -388,61 +383,64 @@ std::span<const char> BoxClearance::run(const BoxFrame& frame, const Eigen::Vect
   broadcast3(frame.origin_m, origin);
   broadcast3(frame.velocity_mps, frame_v);
   for (int k = 0; k < 3; ++k) broadcast3(frame.axes[k], axes[k]);
-  const auto into_frame = [&](const Lanes(&p)[3], const Lanes(&v)[3], Lanes(&d)[3], Lanes(&w)[3]) {
-    const Lanes rel[3] = {p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]};
-    const Lanes rel_v[3] = {v[0] - frame_v[0], v[1] - frame_v[1], v[2] - frame_v[2]};
-    for (int k = 0; k < 3; ++k) {
-      d[k] = dot(rel, axes[k]);
-      w[k] = dot(rel_v, axes[k]);
-    }
+  // Two fragments' positions, velocities and radii (the last one twice at an odd end).
+  struct Pair {
+    Lanes rel[3];
+    Lanes rel_v[3];
+    Lanes radius;
   };
-  // The first stage, over every path straight from the arrays, tests x alone (most paths pass
-  // the box well to a side), with a margin at least the full test's: |d|_1 <= sum |axis_k| |rel|,
-  // so it clears only what the full test clears.
+  const auto load_pair = [&](std::size_t i0, std::size_t i1) {
+    const FragmentState& f0 = fragments[i0];
+    const FragmentState& f1 = fragments[i1];
+    Pair p;
+    for (int k = 0; k < 3; ++k) {
+      p.rel[k] = Lanes{f0.position_m[k], f1.position_m[k]} - origin[k];
+      p.rel_v[k] = Lanes{f0.velocity_mps[k], f1.velocity_mps[k]} - frame_v[k];
+    }
+    p.radius = Lanes{f0.radius_m, f1.radius_m};
+    return p;
+  };
+  // The first stage, over every fragment, tests x alone (most paths pass the box well to a side),
+  // with a margin at least the full test's, |d|_1 <= sum |axis_k| |rel|_1, so that it clears only
+  // what the full test clears. Fragments in doubt are listed without a branch: each writes its
+  // index, the count advances by one where in doubt (a branch would be mispredicted often).
   const double axes_norm =
       (frame.axes[0].norm() + frame.axes[1].norm() + frame.axes[2].norm()) * (1.0 + 1e-12);
-  // Paths in doubt are listed without a branch: each writes its index, the count advances by one
-  // where in doubt (a branch there would be mispredicted for one path in five).
-  doubt_.resize(padded);
   std::size_t doubts = 0;
-  for (std::size_t i = 0; i < padded; i += lanes::kWidth) {
-    const Lanes rel[3] = {lanes::load(&px_[i]) - origin[0], lanes::load(&py_[i]) - origin[1],
-                          lanes::load(&pz_[i]) - origin[2]};
-    const Lanes rel_v[3] = {lanes::load(&vx_[i]) - frame_v[0], lanes::load(&vy_[i]) - frame_v[1],
-                            lanes::load(&vz_[i]) - frame_v[2]};
-    const Lanes grow = lanes::load(&grow_[i]);
-    const Lanes x0 = dot(rel, axes[0]);
-    const Lanes vx = dot(rel_v, axes[0]);
-    const Lanes tol = kBoxMargin * (axes_norm * (l1(rel) + l1(rel_v) * t_end) + acc.reach_m +
-                                    6.0 * lanes::abs(grow));
+  for (std::size_t i = 0; i < n; i += lanes::kWidth) {
+    const std::size_t i1 = std::min(i + 1, n - 1);
+    const Pair p = load_pair(i, i1);
+    const Lanes x0 = dot(p.rel, axes[0]);
+    const Lanes vx = dot(p.rel_v, axes[0]);
+    const Lanes tol = kBoxMargin * (axes_norm * (l1(p.rel) + l1(p.rel_v) * t_end) + acc.reach_m +
+                                    6.0 * lanes::abs(p.radius));
     const Mask usable = lanes::eq(tol - tol, Lanes{}) & lanes::ge(t_end, Lanes{});
     const Mask clear = usable & misses(x0, vx, acc.a[0], acc.inv_2a[0], acc.curved[0], Lanes{},
-                                       t_end, lo[0] - grow - tol, hi[0] + grow + tol);
+                                       t_end, lo[0] - p.radius - tol, hi[0] + p.radius + tol);
     const int bits = lanes::bits(clear);
-    for (int k = 0; k < lanes::kWidth; ++k) {
-      const int clear_k = (bits >> k) & 1;
-      clears_[i + k] = static_cast<char>(clear_k);
-      doubt_[doubts] = static_cast<std::int32_t>(i + k);
-      doubts += static_cast<std::size_t>(1 - clear_k);
-    }
+    clears_[i] = static_cast<char>(bits & 1);
+    doubt_[doubts] = static_cast<std::int32_t>(i);
+    doubts += static_cast<std::size_t>(1 - (bits & 1));
+    clears_[i1] = static_cast<char>((bits >> 1) & 1);  // i1 = i at an odd end: the same answer
+    doubt_[doubts] = static_cast<std::int32_t>(i1);
+    doubts += static_cast<std::size_t>(i1 > i ? 1 - ((bits >> 1) & 1) : 0);
   }
-  if (doubts > 0 && static_cast<std::size_t>(doubt_[doubts - 1]) >= size_) --doubts;  // the spare
-  // The full test over the rest, two at a time (gathered by index).
+  // The full test over the rest, two at a time.
   for (std::size_t j = 0; j < doubts; j += lanes::kWidth) {
-    const std::size_t p[2] = {static_cast<std::size_t>(doubt_[j]),
-                              static_cast<std::size_t>(doubt_[std::min(j + 1, doubts - 1)])};
-    const auto gather = [&p](const std::vector<double>& x) { return Lanes{x[p[0]], x[p[1]]}; };
-    const Lanes pos[3] = {gather(px_), gather(py_), gather(pz_)};
-    const Lanes vel[3] = {gather(vx_), gather(vy_), gather(vz_)};
+    const std::size_t i0 = static_cast<std::size_t>(doubt_[j]);
+    const std::size_t i1 = static_cast<std::size_t>(doubt_[std::min(j + 1, doubts - 1)]);
+    const Pair p = load_pair(i0, i1);
     Lanes d[3];
     Lanes w[3];
-    into_frame(pos, vel, d, w);
-    const Mask clear = box_clear(d, w, acc, lo, hi, gather(grow_), t_end);
-    for (int k = 0; k < lanes::kWidth; ++k) {
-      if (lanes::get(clear, k)) clears_[p[k]] = 1;
+    for (int k = 0; k < 3; ++k) {
+      d[k] = dot(p.rel, axes[k]);
+      w[k] = dot(p.rel_v, axes[k]);
     }
+    const int bits = lanes::bits(box_clear(d, w, acc, lo, hi, p.radius, t_end));
+    clears_[i0] = static_cast<char>(bits & 1);
+    clears_[i1] = static_cast<char>((bits >> 1) & 1);
   }
-  return std::span<const char>(clears_).first(size_);
+  return clears_;
 }
 
 }  // namespace fragsim

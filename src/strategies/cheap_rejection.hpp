@@ -15,6 +15,8 @@
 #include <span>
 #include <vector>
 
+#include "sim/fragment_state.hpp"
+
 namespace fragsim {
 
 // The path relative to the region's centre, x(t) = d + v t + a t^2 (a = g / 2), for t in [0,
@@ -89,35 +91,21 @@ struct BoxFrame {
   Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();
 };
 
-// path_clears_box for many paths given in world coordinates, seen from one frame, under one
-// acceleration (in the frame's axes), against one box grown per path (by the fragment's radius)
-// and over one interval. A first stage (x's range alone) runs over every path, the full test
-// over those it left in doubt.
+// path_clears_box for many fragments, whose paths are given in world coordinates, seen from one
+// frame, under one acceleration (in the frame's axes), against one box grown per fragment by its
+// bounding radius, over one interval. A first stage (x's range alone) runs over every fragment,
+// straight from their states, the full test over those it left in doubt.
 class BoxClearance {
  public:
-  void resize(std::size_t n);
-  void set(std::size_t i, const Eigen::Vector3d& position_m, const Eigen::Vector3d& velocity_mps,
-           double grow_m) {
-    px_[i] = position_m.x();
-    py_[i] = position_m.y();
-    pz_[i] = position_m.z();
-    vx_[i] = velocity_mps.x();
-    vy_[i] = velocity_mps.y();
-    vz_[i] = velocity_mps.z();
-    grow_[i] = grow_m;
-  }
-  std::size_t size() const { return size_; }
-  // One flag per path: 1 when, in `frame`, it clears lo - grow <= x(t) <= hi + grow. Valid until
-  // the next call.
-  std::span<const char> run(const BoxFrame& frame, const Eigen::Vector3d& a_mps2,
-                            const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
-                            double t_end_s);
+  // One flag per fragment: 1 when, in `frame`, its path x(t) = position + velocity t + a t^2
+  // clears lo - radius <= x(t) <= hi + radius. Valid until the next call.
+  std::span<const char> run(std::span<const FragmentState> fragments, const BoxFrame& frame,
+                            const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
+                            const Eigen::Vector3d& hi_m, double t_end_s);
 
  private:
-  std::size_t size_ = 0;
-  std::vector<double> px_, py_, pz_, vx_, vy_, vz_, grow_;  // world, padded to whole lanes
   std::vector<char> clears_;
-  std::vector<std::int32_t> doubt_;  // paths the first stage left in doubt
+  std::vector<std::int32_t> doubt_;  // fragments the first stage left in doubt
 };
 
 }  // namespace fragsim

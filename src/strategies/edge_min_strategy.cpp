@@ -112,18 +112,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
   // that never has all three coordinates inside the box grown by the fragment's radius, with a
   // margin the solves below agree with, is no threat. Most fragments end here.
-  const std::size_t n = ctx.fragments.size();
-  clearance_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const FragmentState& f = ctx.fragments[i];
-    clearance_.set(i, f.position_m, f.velocity_mps, f.radius_m);
-  }
   const BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
   const std::span<const char> clears =
-      clearance_.run(frame, half_g, Eigen::Vector3d(-half_w_m, -half_h_m, -back_m),
+      clearance_.run(ctx.fragments, frame, half_g, Eigen::Vector3d(-half_w_m, -half_h_m, -back_m),
                      Eigen::Vector3d(half_w_m, half_h_m, front_m), horizon_s);
 
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
     if (clears[i]) continue;
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
