@@ -27,7 +27,7 @@ inline Scene single_fragment(const Eigen::Vector3d& start_m, double speed_mps = 
   s.explosion.toward_camera_mps = 0.0;
   s.ground.enabled = false;
   s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {0.0, 1.6, -10.0};
+  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
   s.camera.speed_mps = 0.0;
   s.camera.max_speed_mps = 1.0;
   return s;

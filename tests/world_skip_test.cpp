@@ -40,7 +40,7 @@ Scene skip_scene(bool auto_disable, bool cull) {
   s.sim.cull_resting = cull;
   s.sim.rest_steps = 5;
   s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {0.0, 1.6, -10.0};
+  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
   s.camera.speed_mps = 0.0;
   return s;
 }
@@ -160,7 +160,7 @@ TEST(CullResting, CameraDrivingIntoACulledFragmentStillHitsIt) {
     for (const bool cull : {false, true}) {
       Scene scene = skip_scene(auto_disable, cull);
       scene.camera.waypoints_m = {{0.0, 0.1, 0.0}, {0.0, 0.1, 6.0}};
-      scene.camera.look_at_m = {0.0, 0.1, -10.0};
+      scene.camera.look_at_m = {{0.0, 0.1, -10.0}};
       scene.camera.speed_mps = 1.0;
       scene.camera.max_speed_mps = 1.0;
       const CameraPath path(scene.camera);
@@ -184,7 +184,7 @@ TEST(CullResting, CameraDrivingIntoACulledFragmentStillHitsIt) {
 TEST(AutoDisable, WallWakesASleepingFragment) {
   Scene scene = skip_scene(true, false);
   scene.camera.waypoints_m = {{0.0, 0.3, 0.0}, {0.0, 0.3, -6.0}};
-  scene.camera.look_at_m = {0.0, 0.3, -10.0};
+  scene.camera.look_at_m = {{0.0, 0.3, -10.0}};
   scene.camera.speed_mps = 1.0;
   WorldNeeds needs;
   needs.camera_wall = CameraWallSpec{0.6, 1.0, 1.0, 0.05, 0.3};
@@ -235,7 +235,7 @@ Scene pile_scene(bool cull, bool look_away) {
   s.object.splits = 4;
   s.explosion.speed_mps = 1.5;
   s.camera.waypoints_m = {{0.0, 8.0, 8.0}};
-  s.camera.look_at_m = look_away ? Eigen::Vector3d(0.0, 8.0, 20.0) : Eigen::Vector3d::Zero();
+  s.camera.look_at_m = {look_away ? Eigen::Vector3d(0.0, 8.0, 20.0) : Eigen::Vector3d::Zero()};
   s.camera.speed_mps = 0.0;
   return s;
 }

@@ -42,7 +42,7 @@ Eigen::Vector3d CameraPath::velocity_at(double t_s) const {
 CameraPose CameraPath::pose_at(double t_s) const {
   CameraPose pose;
   pose.eye_m = eye_at(t_s);
-  Eigen::Vector3d f = def_.look_at_m - pose.eye_m;
+  Eigen::Vector3d f = def_.look_at_m.front() - pose.eye_m;
   // Scene validation keeps look_at away from the path; this guards the instant the eye reaches it.
   if (f.norm() < 1e-9) f = Eigen::Vector3d(0, 0, -1);
   pose.forward = f.normalized();

@@ -63,6 +63,8 @@ struct ObjectDef {
   double distance_m = 0.0;
 };
 
+enum class ExplosionAim { kFuture, kPresent };
+
 struct ExplosionDef {
   Eigen::Vector3d offset_m{0.0, 0.0, 0.0};  // blast centre relative to the object centre
   double speed_mps = 5.0;                   // radial speed away from the blast centre
@@ -71,6 +73,9 @@ struct ExplosionDef {
   // Aims the blast: every fragment also gets the ballistic velocity that carries the object's
   // centre to the moving camera's eye at this mean speed; 0 = an undirected explosion.
   double toward_camera_mps = 0.0;
+  // Where the aimed blast is aimed: where the camera will be when the debris arrives (a director
+  // scripting the shot peeks at the camera's future), or where it is at t = 0 (all a game knows).
+  ExplosionAim aim = ExplosionAim::kFuture;
 };
 
 struct GroundDef {
@@ -80,12 +85,35 @@ struct GroundDef {
   double restitution = 0.2;
 };
 
+// Where the camera's motion comes from (camera_motion.hpp).
+enum class CameraMode {
+  kPath,    // along the waypoints at speed_mps, looking at look_at_m
+  kTrack,   // replayed from a CSV file of timed poses (an earlier run's camera.csv, an engine's)
+  kPlayer,  // a seeded model of a person with a gamepad
+};
+
 struct CameraDef {
-  // The camera moves along these points at speed_mps from t = 0 and stops at the last one.
+  CameraMode mode = CameraMode::kPath;
+  // path: the camera moves along these points at speed_mps from t = 0 and stops at the last one.
+  // player: it starts at the first one.
   std::vector<Eigen::Vector3d> waypoints_m{{0.0, 1.6, 0.0}, {0.0, 1.6, -4.0}};
-  Eigen::Vector3d look_at_m{0.0, 1.6, -8.0};
+  // One point: the camera always looks at it. One per waypoint: the point looked at is
+  // interpolated along the path, so the view pans. player: the first point is looked at, at t = 0.
+  std::vector<Eigen::Vector3d> look_at_m{{0.0, 1.6, -8.0}};
   double speed_mps = 2.0;
   double max_speed_mps = 3.0;  // V_c: the fastest the player can move the camera
+  // track: the file, and which rows to take when it has a `strategy` column (empty: the first
+  // strategy in the file).
+  std::string track_file;
+  std::string track_strategy;
+  // player: the intended velocity changes at random moments, this far apart on average
+  // (infinity: never); the actual velocity follows at up to player_accel_mps2 (infinity: at
+  // once); the view turns at up to turn_rate_degps toward random points within
+  // player_look_radius_m of the object's centre, re-drawn as often as the velocity.
+  double player_interval_s = 0.5;
+  double player_accel_mps2 = 20.0;
+  double turn_rate_degps = 90.0;
+  double player_look_radius_m = 1.0;
   double fovy_deg = 60.0;
   double aspect = 16.0 / 9.0;
   double near_m = 0.1;

@@ -188,27 +188,66 @@ KeySpec choice(std::string name, std::string help, Get field,
           }};
 }
 
-KeySpec waypoints() {
-  return {"camera.waypoints_m",
-          "m; the camera's path, points 'x y z' separated by ';' (at least one)",
-          [](Scene& s, const std::string& text) {
+// A list of points 'x y z; x y z; ...' (at least one, at most 1000).
+template <typename Get>
+KeySpec points(std::string name, std::string help, Get field) {
+  return {std::move(name), std::move(help),
+          [field](Scene& s, const std::string& text) {
             std::vector<Eigen::Vector3d> pts;
             std::istringstream in(text);
             std::string item;
             while (std::getline(in, item, ';')) {
               if (trim(item).empty()) continue;
-              if (pts.size() == 1000) throw ValueError{"at most 1000 waypoints"};
+              if (pts.size() == 1000) throw ValueError{"at most 1000 points"};
               pts.push_back(parse_vec3(item));
+              for (int i = 0; i < 3; ++i) {
+                if (std::abs(pts.back()[i]) > 1e6) throw ValueError{"each component must be in [-1e6, 1e6]"};
+              }
             }
             if (pts.empty()) throw ValueError{"expected at least one point 'x y z'"};
-            s.camera.waypoints_m = pts;
+            field(s) = pts;
           },
-          [](const Scene& s) {
+          [field](const Scene& s) {
             std::string out;
-            for (const Eigen::Vector3d& p : s.camera.waypoints_m) {
+            for (const Eigen::Vector3d& p : field(const_cast<Scene&>(s))) {
               out += (out.empty() ? "" : "; ") + format_vec3(p);
             }
             return out;
+          }};
+}
+
+// A plain text value (a file name, a strategy name): one line, no quotes or commas, so it
+// survives config.ini and CSV cells.
+template <typename Get>
+KeySpec text(std::string name, std::string help, Get field) {
+  return {std::move(name), std::move(help),
+          [field](Scene& s, const std::string& v) {
+            const std::string t = trim(v);
+            if (t.find_first_of(",\"\n") != std::string::npos) {
+              throw ValueError{"must be one line without commas or quotes"};
+            }
+            field(s) = t;
+          },
+          [field](const Scene& s) { return field(const_cast<Scene&>(s)); }};
+}
+
+// A duration or rate for which `inf` means "never" or "at once"; every other value is finite.
+template <typename Get>
+KeySpec real_or_inf(std::string name, std::string help, Get field, Range range) {
+  return {std::move(name), std::move(help),
+          [field, range](Scene& s, const std::string& text) {
+            const std::string t = trim(text);
+            if (t == "inf") {
+              field(s) = std::numeric_limits<double>::infinity();
+              return;
+            }
+            const double v = parse_double(t);
+            if (!range.contains(v)) throw ValueError{range.text() + ", or inf"};
+            field(s) = v;
+          },
+          [field](const Scene& s) {
+            const double v = field(const_cast<Scene&>(s));
+            return std::isinf(v) ? std::string("inf") : format_double(v);
           }};
 }
 
@@ -324,6 +363,12 @@ const std::vector<KeySpec>& keys() {
         "m/s; aims the blast: added ballistic velocity carrying the cube's centre "
         "to the moving camera's eye (0 = undirected)",
         [](Scene& s) -> double& { return s.explosion.toward_camera_mps; }, closed(0, 1000)));
+    t.push_back(choice<ExplosionAim>(
+        "explosion.aim",
+        "future | present; the aimed blast goes where the camera will be when the debris "
+        "arrives (scene set-up that peeks), or where it is at t = 0 (all a game knows)",
+        [](Scene& s) -> ExplosionAim& { return s.explosion.aim; },
+        {{"future", ExplosionAim::kFuture}, {"present", ExplosionAim::kPresent}}));
     // [ground]
     t.push_back(boolean("ground.enabled", "on|off; an infinite ground plane",
                         [](Scene& s) -> bool& { return s.ground.enabled; }));
@@ -337,10 +382,22 @@ const std::vector<KeySpec>& keys() {
         "ground.restitution", "bounce, 0 to 1",
         [](Scene& s) -> double& { return s.ground.restitution; }, closed(0, 1)));
     // [camera]
-    t.push_back(waypoints());
-    t.push_back(vec3(
-        "camera.look_at_m", "m; the point the camera looks at",
-        [](Scene& s) -> Eigen::Vector3d& { return s.camera.look_at_m; }, closed(-1e6, 1e6)));
+    t.push_back(choice<CameraMode>(
+        "camera.mode",
+        "path | track | player; where the camera's motion comes from: the waypoints, a CSV file "
+        "of timed poses, or a seeded model of a player with a gamepad",
+        [](Scene& s) -> CameraMode& { return s.camera.mode; },
+        {{"path", CameraMode::kPath}, {"track", CameraMode::kTrack},
+         {"player", CameraMode::kPlayer}}));
+    t.push_back(points(
+        "camera.waypoints_m",
+        "m; the camera's path, points 'x y z' separated by ';' (player: the start is the first)",
+        [](Scene& s) -> std::vector<Eigen::Vector3d>& { return s.camera.waypoints_m; }));
+    t.push_back(points(
+        "camera.look_at_m",
+        "m; the point the camera looks at, or one point per waypoint (interpolated along the "
+        "path, so the view pans)",
+        [](Scene& s) -> std::vector<Eigen::Vector3d>& { return s.camera.look_at_m; }));
     t.push_back(real(
         "camera.speed_mps", "m/s; speed along the waypoints",
         [](Scene& s) -> double& { return s.camera.speed_mps; }, closed(0, 1000)));
@@ -348,6 +405,33 @@ const std::vector<KeySpec>& keys() {
         "camera.max_speed_mps",
         "m/s; V_c, the fastest the player can move the camera (>= speed_mps)",
         [](Scene& s) -> double& { return s.camera.max_speed_mps; }, closed(0, 1000)));
+    t.push_back(text(
+        "camera.track_file",
+        "CSV of timed poses for mode = track: t_s, eye_x_m, eye_y_m, eye_z_m, forward_x, "
+        "forward_y, forward_z, up_x, up_y, up_z (camera.csv's columns; others ignored)",
+        [](Scene& s) -> std::string& { return s.camera.track_file; }));
+    t.push_back(text(
+        "camera.track_strategy",
+        "track: the rows whose `strategy` column has this value (empty: the file's first)",
+        [](Scene& s) -> std::string& { return s.camera.track_strategy; }));
+    t.push_back(real_or_inf(
+        "camera.player_interval_s",
+        "s; player: mean time between changes of the intended velocity and view target (inf: "
+        "never)",
+        [](Scene& s) -> double& { return s.camera.player_interval_s; }, open_closed(0, 3600)));
+    t.push_back(real_or_inf(
+        "camera.player_accel_mps2",
+        "m/s^2; player: the most the actual velocity changes per second toward the intended one "
+        "(inf: instant turns); the bound strategies are told",
+        [](Scene& s) -> double& { return s.camera.player_accel_mps2; }, open_closed(0, 1e6)));
+    t.push_back(real(
+        "camera.turn_rate_degps",
+        "degrees/s; player: the fastest the view turns; the bound strategies are told",
+        [](Scene& s) -> double& { return s.camera.turn_rate_degps; }, open_closed(0, 1e6)));
+    t.push_back(real(
+        "camera.player_look_radius_m",
+        "m; player: view targets are drawn within this distance of the object's centre",
+        [](Scene& s) -> double& { return s.camera.player_look_radius_m; }, closed(0, 1e6)));
     t.push_back(real(
         "camera.fovy_deg", "degrees; vertical field of view",
         [](Scene& s) -> double& { return s.camera.fovy_deg; }, open(0, 180)));
@@ -422,6 +506,25 @@ const std::vector<KeySpec>& keys() {
     t.push_back(real(
         "edge-min.a_max_mps2", "m/s^2; cap on the imposed acceleration",
         [](Scene& s) -> double& { return s.edge_min.a_max_mps2; }, closed(0, 1e9)));
+    t.push_back(choice<CameraModel>(
+        "edge-min.camera_model",
+        "constant | bounded_accel | reachable; what the camera is assumed to do before a "
+        "fragment arrives: keep its velocity and view, change them within acceleration and "
+        "turn-rate bounds, or go anywhere within V_c t",
+        [](Scene& s) -> CameraModel& { return s.edge_min.camera_model; },
+        {{"constant", CameraModel::kConstant},
+         {"bounded_accel", CameraModel::kBoundedAccel},
+         {"reachable", CameraModel::kReachable}}));
+    t.push_back(real(
+        "edge-min.camera_accel_mps2",
+        "m/s^2; bounded_accel: the camera's acceleration bound assumed when the scene declares "
+        "none (mode = path or track)",
+        [](Scene& s) -> double& { return s.edge_min.camera_accel_mps2; }, closed(0, 1e6)));
+    t.push_back(real(
+        "edge-min.camera_turn_degps",
+        "degrees/s; bounded_accel and reachable: the camera's turn-rate bound assumed when the "
+        "scene declares none",
+        [](Scene& s) -> double& { return s.edge_min.camera_turn_degps; }, closed(0, 1e6)));
     // [metrics]
     t.push_back(integer(
         "metrics.grid_width_px", "pixels across the occlusion raster (height from camera.aspect)",
@@ -597,11 +700,21 @@ void validate_scene(const Scene& s) {
     fail("camera.max_speed_mps = " + format_double(s.camera.max_speed_mps) +
          ": must be >= camera.speed_mps = " + format_double(s.camera.speed_mps));
   }
-  for (const Eigen::Vector3d& w : s.camera.waypoints_m) {
-    if ((w - s.camera.look_at_m).norm() <= s.camera.near_m) {
-      fail("camera.look_at_m = " + format_vec3(s.camera.look_at_m) +
-           ": must be farther than camera.near_m from every waypoint");
+  const auto& look = s.camera.look_at_m;
+  const auto& way = s.camera.waypoints_m;
+  if (look.size() != 1 && look.size() != way.size()) {
+    fail("camera.look_at_m: " + std::to_string(look.size()) + " points: must be one, or one per " +
+         "waypoint (" + std::to_string(way.size()) + ")");
+  }
+  for (std::size_t i = 0; i < way.size(); ++i) {
+    const Eigen::Vector3d& target = look.size() == 1 ? look.front() : look[i];
+    if ((way[i] - target).norm() <= s.camera.near_m) {
+      fail("camera.look_at_m = " + format_vec3(target) + ": must be farther than camera.near_m " +
+           "from waypoint " + std::to_string(i + 1));
     }
+  }
+  if (s.camera.mode == CameraMode::kTrack && s.camera.track_file.empty()) {
+    fail("camera.track_file: needed with camera.mode = track");
   }
   if (s.object.distance_m > 0.0 &&
       (s.object.centre_m - s.camera.waypoints_m.front()).norm() < 1e-9) {

@@ -14,14 +14,20 @@
 
 namespace fragsim {
 
+// Everything a strategy may know at the start of a step: the present, never the camera's future.
 struct StepContext {
   int step = 0;      // index of the step about to be taken
   double t_s = 0.0;  // time at the start of the step; 0 is the explosion
   double dt_s = 0.0;
   double duration_s = 0.0;
   CameraPose camera;  // as rendered now (scene near distance)
-  Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();  // over the step being taken
   double camera_max_speed_mps = 0.0;  // V_c
+  // The camera's declared limits beyond V_c, +infinity where the scene declares none (a scripted
+  // path or a replayed track may start, stop and turn instantly). A strategy that assumes a bound
+  // the scene does not declare says so in its own parameters.
+  double camera_max_accel_mps2 = 0.0;
+  double camera_max_turn_radps = 0.0;
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
   double ground_height_m = 0.0;

@@ -54,9 +54,21 @@ struct EdgeParams {
 
 // `edge-min` (METHOD.md section 4): the least constant push that takes a fragment just past the
 // nearest edge of the protected rectangle before it arrives. No gain to tune.
+// What edge-min assumes the camera does before a fragment arrives.
+enum class CameraModel {
+  kConstant,      // keeps its present velocity and orientation (the first edge-min)
+  kBoundedAccel,  // may change velocity at up to an acceleration bound and turn at a bounded rate
+  kReachable,     // may be anywhere within V_c t of where it is (the thesis's ball), any turn
+};
+
 struct EdgeMinParams {
   double margin_m = 0.05;    // clearance kept beyond the rectangle's edge
   double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
+  CameraModel camera_model = CameraModel::kConstant;
+  // The bounds assumed when the scene declares none (camera.mode = path or track); a scene that
+  // declares its bounds (camera.mode = player) is taken at its word.
+  double camera_accel_mps2 = 20.0;
+  double camera_turn_degps = 90.0;
 };
 
 }  // namespace fragsim

@@ -129,8 +129,8 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
   cam.near_m = s.near_m;
   cam.fovy_deg = s.fovy_deg;
   // An object ahead is looked at (as in front.ini); otherwise the camera looks 10 m ahead.
-  cam.look_at_m =
-      s.placement == Placement::kAhead ? centre : Eigen::Vector3d(kEye0 + 10.0 * kForward);
+  cam.look_at_m = {s.placement == Placement::kAhead ? centre
+                                                    : Eigen::Vector3d(kEye0 + 10.0 * kForward)};
   const double v = s.camera_speed_mps;
   switch (s.motion) {
     case CameraMotion::kStill:
@@ -141,7 +141,7 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
     case CameraMotion::kMaxSpeed: {
       // Long enough that the camera never reaches the end within the run.
       Eigen::Vector3d end = kEye0 + (v * sc.sim.duration_s + 1.0) * s.camera_dir;
-      if ((end - cam.look_at_m).norm() <= 2.0 * cam.near_m) end.y() += 1.0;
+      if ((end - cam.look_at_m.front()).norm() <= 2.0 * cam.near_m) end.y() += 1.0;
       cam.waypoints_m = {kEye0, end};
       cam.speed_mps = v;
       cam.max_speed_mps = v;
