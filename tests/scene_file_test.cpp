@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -111,8 +113,31 @@ TEST(SceneFile, MissingFileIsNamed) {
     load_scene("/nonexistent/scene.ini");
     FAIL();
   } catch (const SceneError& e) {
-    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.ini: cannot open scene file");
+    EXPECT_EQ(std::string(e.what()), "/nonexistent/scene.ini: no such scene file");
   }
+}
+
+// A directory used to read as an empty file, so the built-in defaults ran silently.
+TEST(SceneFile, DirectoryIsRefused) {
+  try {
+    load_scene("/tmp");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), "/tmp: is a directory, not a scene file");
+  }
+}
+
+// Some Windows editors save UTF-8 with a byte-order mark; it used to be glued to the first key.
+TEST(SceneFile, ByteOrderMarkIsDropped) {
+  const std::string path = ::testing::TempDir() + "/bom_scene.ini";
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << "\xEF\xBB\xBFname = bom\n[camera]\nfovy_deg = 50\n";
+  }
+  const Scene s = load_scene(path);
+  EXPECT_EQ(s.name, "bom");
+  EXPECT_EQ(s.camera.fovy_deg, 50.0);
+  std::remove(path.c_str());
 }
 
 TEST(SceneFile, ShippedScenesLoad) {

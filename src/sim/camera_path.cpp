@@ -1,6 +1,5 @@
 #include "sim/camera_path.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
@@ -15,16 +14,32 @@ CameraPath::CameraPath(const CameraDef& def) : def_(def) {
   }
 }
 
-Eigen::Vector3d CameraPath::eye_at(double t_s) const {
+CameraPath::Place CameraPath::place_at(double t_s) const {
   const auto& w = def_.waypoints_m;
-  if (w.size() == 1 || def_.speed_mps <= 0.0) return w.front();
+  if (w.size() == 1 || def_.speed_mps <= 0.0) return {0, 0.0};
   const double s = std::clamp(def_.speed_mps * std::max(t_s, 0.0), 0.0, arc_m_.back());
   auto it = std::upper_bound(arc_m_.begin(), arc_m_.end(), s);
-  if (it == arc_m_.end()) return w.back();
+  if (it == arc_m_.end()) return {w.size(), 0.0};
   const std::size_t i = static_cast<std::size_t>(it - arc_m_.begin());  // segment i-1 -> i
   const double len = arc_m_[i] - arc_m_[i - 1];
-  const double u = len > 0.0 ? (s - arc_m_[i - 1]) / len : 0.0;
-  return w[i - 1] + u * (w[i] - w[i - 1]);
+  return {i, len > 0.0 ? (s - arc_m_[i - 1]) / len : 0.0};
+}
+
+Eigen::Vector3d CameraPath::eye_at(double t_s) const {
+  const auto& w = def_.waypoints_m;
+  const Place p = place_at(t_s);
+  if (p.i == 0) return w.front();
+  if (p.i == w.size()) return w.back();
+  return w[p.i - 1] + p.u * (w[p.i] - w[p.i - 1]);
+}
+
+Eigen::Vector3d CameraPath::look_at(double t_s) const {
+  const auto& l = def_.look_at_m;
+  if (l.size() == 1) return l.front();
+  const Place p = place_at(t_s);
+  if (p.i == 0) return l.front();
+  if (p.i == l.size()) return l.back();
+  return l[p.i - 1] + p.u * (l[p.i] - l[p.i - 1]);
 }
 
 Eigen::Vector3d CameraPath::velocity_at(double t_s) const {
@@ -40,21 +55,7 @@ Eigen::Vector3d CameraPath::velocity_at(double t_s) const {
 }
 
 CameraPose CameraPath::pose_at(double t_s) const {
-  CameraPose pose;
-  pose.eye_m = eye_at(t_s);
-  Eigen::Vector3d f = def_.look_at_m.front() - pose.eye_m;
-  // Scene validation keeps look_at away from the path; this guards the instant the eye reaches it.
-  if (f.norm() < 1e-9) f = Eigen::Vector3d(0, 0, -1);
-  pose.forward = f.normalized();
-  Eigen::Vector3d world_up(0, 1, 0);
-  if (std::abs(pose.forward.dot(world_up)) > 0.999) world_up = Eigen::Vector3d(0, 0, 1);
-  pose.right = pose.forward.cross(world_up).normalized();
-  pose.up = pose.right.cross(pose.forward);
-  pose.fovy_deg = def_.fovy_deg;
-  pose.aspect = def_.aspect;
-  pose.near_m = def_.near_m;
-  pose.far_m = def_.far_m;
-  return pose;
+  return pose_looking_at(def_, eye_at(t_s), look_at(t_s));
 }
 
 }  // namespace fragsim

@@ -46,4 +46,13 @@ struct CameraPose {
   }
 };
 
+// One timed sample of a camera's motion: where the eye is and which way it looks. A recorded
+// track (camera.csv, an engine's export) and the player model are lists of these.
+struct CameraSample {
+  double t_s = 0.0;
+  Eigen::Vector3d eye_m{0, 0, 0};
+  Eigen::Vector3d forward{0, 0, -1};
+  Eigen::Vector3d up{0, 1, 0};
+};
+
 }  // namespace fragsim

@@ -2,8 +2,9 @@
 
 #include <cmath>
 
-#include "sim/camera_path.hpp"
+#include "sim/camera_motion.hpp"
 #include "sim/random.hpp"
+#include "sim/sampled_camera.hpp"
 
 namespace fragsim {
 namespace {
@@ -16,17 +17,22 @@ Eigen::Vector3d unit_ball(Random& rng) {
   }
 }
 
-// The ballistic velocity that takes a point from `from` to where the camera's eye will be when
-// it arrives, flying the straight-line distance at mean speed `speed_mps`. The arrival time is
-// found by fixed-point iteration (the camera is slower than the debris in any sensible scene; the
-// iteration count bounds it otherwise).
-Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraPath& camera,
-                               double speed_mps, const Eigen::Vector3d& gravity_mps2) {
+// The ballistic velocity that takes a point from `from` to the camera's eye, flying the
+// straight-line distance at mean speed `speed_mps`: to where the eye will be when the debris
+// arrives (aim = future; the arrival time is found by fixed-point iteration: the camera is slower
+// than the debris in any sensible scene, the iteration count bounds it otherwise), or to where it
+// is at t = 0 (aim = present).
+Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraMotion& camera,
+                               ExplosionAim aim, double speed_mps,
+                               const Eigen::Vector3d& gravity_mps2) {
   if (speed_mps <= 0.0) return Eigen::Vector3d::Zero();
+  auto target_at = [&](double t_s) {
+    return aim == ExplosionAim::kFuture ? camera.eye_at(t_s) : camera.eye_at(0.0);
+  };
   double flight_s = 0.0;
-  for (int i = 0; i < 32; ++i) flight_s = (camera.eye_at(flight_s) - from).norm() / speed_mps;
+  for (int i = 0; i < 32; ++i) flight_s = (target_at(flight_s) - from).norm() / speed_mps;
   if (flight_s <= 0.0) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d d = camera.eye_at(flight_s) - from;
+  const Eigen::Vector3d d = target_at(flight_s) - from;
   return d / flight_s - 0.5 * gravity_mps2 * flight_s;
 }
 
@@ -35,11 +41,19 @@ Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraPath& ca
 Eigen::Vector3d object_centre(const Scene& scene) {
   const ObjectDef& obj = scene.object;
   if (obj.distance_m <= 0.0) return obj.centre_m;
-  const Eigen::Vector3d eye = scene.camera.waypoints_m.front();
+  const CameraDef& cam = scene.camera;
+  // A replayed track starts wherever its samples put the eye at t = 0.
+  const Eigen::Vector3d eye = cam.mode == CameraMode::kTrack && !cam.track_samples.empty()
+                                  ? SampledCamera(cam, cam.track_samples).eye_at(0.0)
+                                  : cam.waypoints_m.front();
   return eye + obj.distance_m * (obj.centre_m - eye).normalized();
 }
 
 std::vector<FragmentSpawn> explode(const Scene& scene) {
+  return explode(scene, *make_camera_motion(scene));
+}
+
+std::vector<FragmentSpawn> explode(const Scene& scene, const CameraMotion& camera) {
   const ObjectDef& obj = scene.object;
   const ExplosionDef& ex = scene.explosion;
   const int n = obj.splits;
@@ -48,8 +62,8 @@ std::vector<FragmentSpawn> explode(const Scene& scene) {
   const double mass_kg = obj.density_kgpm3 * std::pow(2.0 * half_m, 3);
   const Eigen::Vector3d centre_m = object_centre(scene);
   const Eigen::Vector3d blast_m = centre_m + ex.offset_m;
-  const Eigen::Vector3d aim_mps = aimed_velocity(centre_m, CameraPath(scene.camera),
-                                                 ex.toward_camera_mps, scene.sim.gravity_mps2);
+  const Eigen::Vector3d aim_mps =
+      aimed_velocity(centre_m, camera, ex.aim, ex.toward_camera_mps, scene.sim.gravity_mps2);
 
   Random rng(scene.sim.seed);
   std::vector<FragmentSpawn> out;

@@ -8,6 +8,8 @@
 
 namespace fragsim {
 
+class CameraMotion;
+
 struct FragmentSpawn {
   Eigen::Vector3d position_m;
   Eigen::Vector3d velocity_mps;
@@ -17,11 +19,15 @@ struct FragmentSpawn {
 };
 
 // Where the object's centre is: object.centre_m, or, with object.distance_m set, the point that
-// far from the camera's start on the line through centre_m.
+// far from the camera's start (its first waypoint, or a track's eye at t = 0) on the line through
+// centre_m.
 Eigen::Vector3d object_centre(const Scene& scene);
 
 // Deterministic for a given scene (seeded by scene.sim.seed). Fragments are ordered x fastest,
 // then y, then z, so fragment i is the same piece of the object in every run of the scene.
+// An aimed blast (explosion.toward_camera_mps > 0) is aimed at `camera`; the first form makes the
+// scene's own camera motion.
 std::vector<FragmentSpawn> explode(const Scene& scene);
+std::vector<FragmentSpawn> explode(const Scene& scene, const CameraMotion& camera);
 
 }  // namespace fragsim

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/camera_pose.hpp"
 #include "strategies/strategy_params.hpp"
 
 namespace fragsim {
@@ -106,6 +107,9 @@ struct CameraDef {
   // strategy in the file).
   std::string track_file;
   std::string track_strategy;
+  // The track's samples, read from track_file when the scene is loaded (camera_track_file.hpp),
+  // so a bad file fails before anything runs. Not a scene key.
+  std::vector<CameraSample> track_samples;
   // player: the intended velocity changes at random moments, this far apart on average
   // (infinity: never); the actual velocity follows at up to player_accel_mps2 (infinity: at
   // once); the view turns at up to turn_rate_degps toward random points within

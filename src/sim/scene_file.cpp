@@ -1,5 +1,6 @@
 #include "sim/scene_file.hpp"
 
+#include "sim/camera_track_file.hpp"
 #include "sim/number_format.hpp"
 
 #include <boost/program_options/errors.hpp>
@@ -201,7 +202,8 @@ KeySpec points(std::string name, std::string help, Get field) {
               if (pts.size() == 1000) throw ValueError{"at most 1000 points"};
               pts.push_back(parse_vec3(item));
               for (int i = 0; i < 3; ++i) {
-                if (std::abs(pts.back()[i]) > 1e6) throw ValueError{"each component must be in [-1e6, 1e6]"};
+                if (std::abs(pts.back()[i]) > 1e6)
+                  throw ValueError{"each component must be in [-1e6, 1e6]"};
               }
             }
             if (pts.empty()) throw ValueError{"expected at least one point 'x y z'"};
@@ -387,7 +389,8 @@ const std::vector<KeySpec>& keys() {
         "path | track | player; where the camera's motion comes from: the waypoints, a CSV file "
         "of timed poses, or a seeded model of a player with a gamepad",
         [](Scene& s) -> CameraMode& { return s.camera.mode; },
-        {{"path", CameraMode::kPath}, {"track", CameraMode::kTrack},
+        {{"path", CameraMode::kPath},
+         {"track", CameraMode::kTrack},
          {"player", CameraMode::kPlayer}}));
     t.push_back(points(
         "camera.waypoints_m",
@@ -405,15 +408,15 @@ const std::vector<KeySpec>& keys() {
         "camera.max_speed_mps",
         "m/s; V_c, the fastest the player can move the camera (>= speed_mps)",
         [](Scene& s) -> double& { return s.camera.max_speed_mps; }, closed(0, 1000)));
-    t.push_back(text(
-        "camera.track_file",
-        "CSV of timed poses for mode = track: t_s, eye_x_m, eye_y_m, eye_z_m, forward_x, "
-        "forward_y, forward_z, up_x, up_y, up_z (camera.csv's columns; others ignored)",
-        [](Scene& s) -> std::string& { return s.camera.track_file; }));
-    t.push_back(text(
-        "camera.track_strategy",
-        "track: the rows whose `strategy` column has this value (empty: the file's first)",
-        [](Scene& s) -> std::string& { return s.camera.track_strategy; }));
+    t.push_back(
+        text("camera.track_file",
+             "CSV of timed poses for mode = track: t_s, eye_x_m, eye_y_m, eye_z_m, forward_x, "
+             "forward_y, forward_z, up_x, up_y, up_z (camera.csv's columns; others ignored)",
+             [](Scene& s) -> std::string& { return s.camera.track_file; }));
+    t.push_back(
+        text("camera.track_strategy",
+             "track: the rows whose `strategy` column has this value (empty: the file's first)",
+             [](Scene& s) -> std::string& { return s.camera.track_strategy; }));
     t.push_back(real_or_inf(
         "camera.player_interval_s",
         "s; player: mean time between changes of the intended velocity and view target (inf: "
@@ -659,18 +662,26 @@ Scene parse_scene(const std::string& text, const std::string& origin,
     apply(scene, o.key, o.value, "--" + o.key);
   }
   validate_scene(scene);
+  if (scene.camera.mode == CameraMode::kTrack) {
+    try {
+      scene.camera.track_samples = load_camera_track(
+          scene.camera.track_file, scene.camera.track_strategy, scene.camera.max_speed_mps);
+    } catch (const InputError& e) {
+      throw SceneError(std::string(e.what()) + " (camera.track_file)");
+    }
+  }
   return scene;
 }
 
 Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
   if (path.empty()) return parse_scene("", "", overrides);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw SceneError(path + ": cannot open scene file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw SceneError(path + ": cannot read scene file");
-  Scene scene = parse_scene(text.str(), path, overrides);
-  return scene;
+  std::string text;
+  try {
+    text = read_input_file(path, "scene file");
+  } catch (const InputError& e) {
+    throw SceneError(e.what());
+  }
+  return parse_scene(text, path, overrides);
 }
 
 std::string scene_to_ini(const Scene& scene) {
@@ -713,7 +724,8 @@ void validate_scene(const Scene& s) {
            "from waypoint " + std::to_string(i + 1));
     }
   }
-  if (s.camera.mode == CameraMode::kTrack && s.camera.track_file.empty()) {
+  if (s.camera.mode == CameraMode::kTrack && s.camera.track_file.empty() &&
+      s.camera.track_samples.empty()) {
     fail("camera.track_file: needed with camera.mode = track");
   }
   if (s.object.distance_m > 0.0 &&

@@ -8,15 +8,16 @@
 #include <string>
 #include <vector>
 
+#include "sim/input_file.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {
 
 // A bad scene file or setting. The message is one line naming file:line or --option, the key,
 // the value and what was expected.
-class SceneError : public std::runtime_error {
+class SceneError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 // Every scene key as a string-valued option, for the CLI's parser and its --help.

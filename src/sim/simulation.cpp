@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "sim/camera_path.hpp"
+#include "sim/camera_motion.hpp"
 #include "sim/explosion.hpp"
 #include "sim/world.hpp"
 
@@ -26,8 +26,10 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
                    std::span<RunObserver* const> observers) {
   const auto run_start = Clock::now();
   const long messages_before = World::ode_messages();
-  const CameraPath path(scene.camera);
-  World world(scene, strategy.needs(), explode(scene));
+  const std::unique_ptr<CameraMotion> camera = make_camera_motion(scene);
+  const CameraMotion& path = *camera;
+  const CameraLimits limits = declared_limits(scene.camera);
+  World world(scene, strategy.needs(), explode(scene, path));
   std::vector<FragmentState> states = world.init_states();
   strategy.reset(world.fragment_count());
 
@@ -59,7 +61,9 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     ctx.duration_s = scene.sim.duration_s;
     ctx.camera = path.pose_at(t);
     ctx.camera_velocity_mps = path.velocity_at(t);
-    ctx.camera_max_speed_mps = scene.camera.max_speed_mps;
+    ctx.camera_max_speed_mps = limits.max_speed_mps;
+    ctx.camera_max_accel_mps2 = limits.max_accel_mps2;
+    ctx.camera_max_turn_radps = limits.max_turn_radps;
     ctx.camera_body_half_m = body_half;
     ctx.gravity_mps2 = scene.sim.gravity_mps2;
     ctx.ground_height_m = scene.ground.height_m;

@@ -22,7 +22,7 @@ struct StepContext {
   double duration_s = 0.0;
   CameraPose camera;  // as rendered now (scene near distance)
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();  // over the step being taken
-  double camera_max_speed_mps = 0.0;  // V_c
+  double camera_max_speed_mps = 0.0;                              // V_c
   // The camera's declared limits beyond V_c, +infinity where the scene declares none (a scripted
   // path or a replayed track may start, stop and turn instantly). A strategy that assumes a bound
   // the scene does not declare says so in its own parameters.
