@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "sim/random.hpp"
@@ -76,6 +77,8 @@ const char* motion_name(CameraMotion m) {
       return "max-speed";
     case CameraMotion::kReversing:
       return "reversing";
+    case CameraMotion::kPlayer:
+      return "player";
   }
   return "?";
 }
@@ -157,6 +160,17 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
       cam.max_speed_mps = v;
       break;
     }
+    case CameraMotion::kPlayer:
+      cam.mode = CameraMode::kPlayer;
+      cam.waypoints_m = {kEye0};
+      cam.speed_mps = 0.0;
+      cam.max_speed_mps = v;
+      cam.player_interval_s = s.dt_s;
+      cam.player_accel_mps2 = std::numeric_limits<double>::infinity();
+      cam.turn_rate_degps = 1e5;
+      sc.explosion.aim = ExplosionAim::kPresent;
+      sc.edge_min.camera_model = CameraModel::kBoundedAccel;
+      break;
   }
 
   sc.wall.distance_m = s.wall_distance_m;
@@ -378,6 +392,30 @@ std::vector<StressCase> corner_cases(const Budget& budget) {
   s.motion = CameraMotion::kReversing;
   s.camera_speed_mps = 10.0;
   s.camera_dir = Eigen::Vector3d(1.0, 0.0, 0.0);
+  add(s);
+
+  // A player turning at once and changing its mind every step at 300 m/s, the largest step, the
+  // blast at the eye: every camera bound the strategies are told is at its extreme.
+  s = Spec{};
+  s.name = "player-300mps-dt0.1-instant-at-eye";
+  s.splits = 10;
+  s.placement = Placement::kAtEye;
+  s.speed_mps = 5.0;
+  s.dt_s = 0.1;
+  s.motion = CameraMotion::kPlayer;
+  s.camera_speed_mps = 300.0;
+  add(s);
+
+  // A game-speed player with instant turns, smallest step, an aimed blast ahead.
+  s = Spec{};
+  s.name = "player-6mps-dt1e-3-instant-aimed";
+  s.splits = 8;
+  s.placement = Placement::kAhead;
+  s.distance_m = 4.0;
+  s.toward_camera_mps = 20.0;
+  s.dt_s = 1e-3;
+  s.motion = CameraMotion::kPlayer;
+  s.camera_speed_mps = 6.0;
   add(s);
 
   // Dense debris colliding at 200 m/s with the smallest step.

@@ -47,6 +47,7 @@ enum class CameraMotion {
   kStill,      // one waypoint
   kMaxSpeed,   // a straight line at camera.speed_mps = camera.max_speed_mps
   kReversing,  // waypoints alternating between two points speed * dt apart: it turns every step
+  kPlayer,     // camera.mode = player at V_c = speed, instant turns, a change of mind every step
 };
 
 // Where the object (and so the blast) is, relative to the camera's first eye position.
