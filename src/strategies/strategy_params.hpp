@@ -64,7 +64,7 @@ enum class CameraModel {
 struct EdgeMinParams {
   double margin_m = 0.05;    // clearance kept beyond the rectangle's edge
   double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
-  CameraModel camera_model = CameraModel::kConstant;
+  CameraModel camera_model = CameraModel::kBoundedAccel;
   // The bounds assumed when the scene declares none (camera.mode = path or track); a scene that
   // declares its bounds (camera.mode = player) is taken at its word.
   double camera_accel_mps2 = 20.0;
