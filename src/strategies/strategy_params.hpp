@@ -58,7 +58,7 @@ struct EdgeParams {
 enum class CameraModel {
   kConstant,      // keeps its present velocity and orientation (the first edge-min)
   kBoundedAccel,  // may change velocity at up to an acceleration bound and turn at a bounded rate
-  kReachable,     // may be anywhere within V_c t of where it is (the thesis's ball), any turn
+  kReachable,     // anywhere within V_c t of where it is (the thesis's ball): any acceleration
 };
 
 struct EdgeMinParams {
