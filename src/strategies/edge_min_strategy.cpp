@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "strategies/first_root.hpp"
 #include "strategies/force_cap.hpp"
@@ -19,16 +20,26 @@ struct Coord {
   double at(double t) const { return c0 + t * (c1 + t * c2); }
 };
 
-// A set of at most a few disjoint time intervals, in order.
+// A set of at most a few disjoint time intervals, in order. Room for every set the constant model
+// makes (a parabola meets a slab in at most two pieces; intersections of two and three such sets
+// in at most seven); past that, the last piece is widened to hold the rest: more times at which a
+// push must clear the box, never fewer.
 struct Intervals {
-  std::array<std::array<double, 2>, 4> span{};
+  std::array<std::array<double, 2>, 8> span{};
   int n = 0;
   bool empty() const { return n == 0; }
+  void append(double a, double b) {
+    if (n < static_cast<int>(span.size())) {
+      span[static_cast<std::size_t>(n++)] = {a, b};
+    } else {
+      span[span.size() - 1][1] = std::max(span[span.size() - 1][1], b);
+    }
+  }
 };
 
-// The times in [0, horizon] where lo <= coord(t) <= hi.
-Intervals within(const Coord& c, double lo, double hi, double horizon) {
-  // 0, at most two roots per bound, the horizon; kept sorted by insertion.
+// The times in [t0, t1] where lo(t) <= coord(t) <= hi(t), the bounds quadratics too.
+Intervals within(const Coord& c, const Coord& lo, const Coord& hi, double t0, double t1) {
+  // t0, at most two roots per bound, t1; kept sorted by insertion.
   std::array<double, 6> pts{};
   int np = 0;
   auto add = [&pts, &np](double v) {
@@ -38,10 +49,11 @@ Intervals within(const Coord& c, double lo, double hi, double horizon) {
     }
     pts[static_cast<std::size_t>(k)] = v;
   };
-  add(0.0);
-  add(horizon);
-  for (double bound : {lo, hi}) {
-    for (double r : list_real_roots({c.c0 - bound, c.c1, c.c2, 0.0, 0.0}, 0.0, horizon)) {
+  add(t0);
+  add(t1);
+  for (const Coord& bound : {lo, hi}) {
+    for (double r :
+         list_real_roots({c.c0 - bound.c0, c.c1 - bound.c1, c.c2 - bound.c2, 0.0, 0.0}, t0, t1)) {
       if (np < static_cast<int>(pts.size())) add(r);
     }
   }
@@ -49,19 +61,25 @@ Intervals within(const Coord& c, double lo, double hi, double horizon) {
   for (int i = 0; i + 1 < np; ++i) {
     const double a = pts[static_cast<std::size_t>(i)];
     const double b = pts[static_cast<std::size_t>(i + 1)];
-    const double mid = c.at(0.5 * (a + b));
-    const bool inside = b > a ? (mid >= lo && mid <= hi) : false;
+    const double m = 0.5 * (a + b);
+    const double mid = c.at(m);
+    const bool inside = b > a ? (mid >= lo.at(m) && mid <= hi.at(m)) : false;
     if (!inside) continue;
-    if (out.n > 0 && out.span[out.n - 1][1] >= a) {
-      out.span[out.n - 1][1] = b;  // contiguous with the previous piece
-    } else if (out.n < 4) {
-      out.span[out.n++] = {a, b};
+    if (out.n > 0 && out.span[static_cast<std::size_t>(out.n - 1)][1] >= a) {
+      out.span[static_cast<std::size_t>(out.n - 1)][1] = b;  // contiguous with the previous piece
+    } else {
+      out.append(a, b);
     }
   }
-  // A path that starts inside has t = 0 in the set even when the first piece is degenerate.
-  const double v0 = c.at(0.0);
-  if (out.n == 0 && v0 >= lo && v0 <= hi) out.span[out.n++] = {0.0, 0.0};
+  // A path that starts inside has t0 in the set even when the first piece is degenerate.
+  const double v0 = c.at(t0);
+  if (out.n == 0 && v0 >= lo.at(t0) && v0 <= hi.at(t0)) out.append(t0, t0);
   return out;
+}
+
+// The constant model's slab: fixed bounds over [0, horizon].
+Intervals within(const Coord& c, double lo, double hi, double horizon) {
+  return within(c, Coord{lo, 0.0, 0.0}, Coord{hi, 0.0, 0.0}, 0.0, horizon);
 }
 
 Intervals intersect(const Intervals& a, const Intervals& b) {
@@ -70,7 +88,22 @@ Intervals intersect(const Intervals& a, const Intervals& b) {
     for (int j = 0; j < b.n; ++j) {
       const double lo = std::max(a.span[i][0], b.span[j][0]);
       const double hi = std::min(a.span[i][1], b.span[j][1]);
-      if (lo <= hi && out.n < 4) out.span[out.n++] = {lo, hi};
+      if (lo <= hi) out.append(lo, hi);
+    }
+  }
+  return out;
+}
+
+// a's pieces, then b's (all of b later than a's), joined where they meet.
+Intervals unite_in_order(const Intervals& a, const Intervals& b) {
+  Intervals out = a;
+  for (int j = 0; j < b.n; ++j) {
+    const auto& piece = b.span[static_cast<std::size_t>(j)];
+    if (out.n > 0 && out.span[static_cast<std::size_t>(out.n - 1)][1] >= piece[0]) {
+      auto& last = out.span[static_cast<std::size_t>(out.n - 1)];
+      last[1] = std::max(last[1], piece[1]);
+    } else {
+      out.append(piece[0], piece[1]);
     }
   }
   return out;
@@ -97,7 +130,169 @@ double least_accel(const Coord& c, double half, int sign, const Intervals& when,
   return need;
 }
 
+// The protected box around the eye, already grown by the fragment's radius: lo <= x <= hi.
+struct Slabs {
+  std::array<double, 3> lo{};
+  std::array<double, 3> hi{};
+};
+
+// rho(t) = q1 t + q2 t^2 + rot_m min(turn t, 2): how far the protected box can be, t after now,
+// from where a constraint's centre puts it. A point rot_m from the eye moves by a chord of at
+// most rot_m min(angle, 2) when the view turns by `angle`; the translation part is the
+// constraint's own (0.5 A t^2 about the constant-velocity path, V_c t about the eye now).
+struct Inflation {
+  double q1_mps = 0.0;
+  double q2_mps2 = 0.0;
+  double rot_m = 0.0;
+  double turn_radps = 0.0;
+  // Where the chord stops growing (2 / turn); 0 for an instant turn, +inf without turning.
+  double knee_s() const { return turn_radps > 0.0 ? 2.0 / turn_radps : kInf; }
+  // rho as a quadratic on one side of the knee.
+  Coord piece(bool after_knee) const {
+    if (after_knee) return {2.0 * rot_m, q1_mps, q2_mps2};
+    return {0.0, q1_mps + rot_m * turn_radps, q2_mps2};
+  }
+  double at(double t) const { return piece(t >= knee_s()).at(t); }
+};
+
+// One region the camera is certain to stay in: the fragment's camera-axis coordinates relative to
+// the region's centre, and how far the protected box can stray from there.
+struct Constraint {
+  std::array<Coord, 3> axis;
+  Inflation rho;
+};
+
+// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab.
+Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double t_end) {
+  const Coord& c = con.axis[static_cast<std::size_t>(k)];
+  const double lo = slabs.lo[static_cast<std::size_t>(k)];
+  const double hi = slabs.hi[static_cast<std::size_t>(k)];
+  const auto piece = [&](bool after, double t0, double t1) {
+    const Coord r = con.rho.piece(after);
+    return within(c, Coord{lo - r.c0, -r.c1, -r.c2}, Coord{hi + r.c0, r.c1, r.c2}, t0, t1);
+  };
+  const double knee = con.rho.knee_s();
+  if (knee >= t_end) return piece(false, 0.0, t_end);
+  if (knee <= 0.0) return piece(true, 0.0, t_end);
+  return unite_in_order(piece(false, 0.0, knee), piece(true, knee, t_end));
+}
+
+// The worst case's threat and its least pushes along +up, -up, +right, -right (the order of
+// `dir` in step()), for a push that starts `delay_s` from now.
+struct WorstCase {
+  bool threat = false;
+  std::array<double, 4> need{};
+};
+
+// least_accel against the intersection of the constraints' grown boxes: outside any one of them
+// at time t is a miss, so the gap to cover is the least over them.
+double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m, int sign,
+                         const Intervals& when, double dt, double delay_s) {
+  double need = 0.0;
+  for (int i = 0; i < when.n; ++i) {
+    const double a = when.span[static_cast<std::size_t>(i)][0];
+    const double b = when.span[static_cast<std::size_t>(i)][1];
+    for (int s = 0; s <= 8; ++s) {
+      const double t = a + (b - a) * s / 8.0;
+      double gap = kInf;
+      for (const Constraint& con : cons) {
+        gap = std::min(gap,
+                       edge_m + con.rho.at(t) - sign * con.axis[static_cast<std::size_t>(k)].at(t));
+      }
+      if (!(gap > 0.0)) continue;
+      const double per_accel = EdgeMinStrategy::displacement_per_accel(t - delay_s, dt);
+      if (per_accel <= 0.0) return kInf;  // no push started by then helps
+      need = std::max(need, gap / per_accel);
+    }
+  }
+  return need;
+}
+
+WorstCase worst_case(std::span<const Constraint> cons, const Slabs& slabs, double t_end, double dt,
+                     double delay_s) {
+  std::array<Intervals, 3> in;
+  for (int k = 0; k < 3; ++k) {
+    Intervals& set = in[static_cast<std::size_t>(k)];
+    set = within_grown(cons[0], k, slabs, t_end);
+    for (std::size_t j = 1; j < cons.size() && !set.empty(); ++j) {
+      set = intersect(set, within_grown(cons[j], k, slabs, t_end));
+    }
+    if (set.empty()) return {};
+  }
+  const Intervals in_xz = intersect(in[0], in[2]);
+  const Intervals in_yz = intersect(in[1], in[2]);
+  if (intersect(in_xz, in[1]).empty()) return {};
+  WorstCase wc;
+  wc.threat = true;
+  wc.need = {least_accel_grown(cons, 1, slabs.hi[1], +1, in_xz, dt, delay_s),
+             least_accel_grown(cons, 1, -slabs.lo[1], -1, in_xz, dt, delay_s),
+             least_accel_grown(cons, 0, slabs.hi[0], +1, in_yz, dt, delay_s),
+             least_accel_grown(cons, 0, -slabs.lo[0], -1, in_yz, dt, delay_s)};
+  return wc;
+}
+
+// The latest time-to-threat at which a robust model may still have to act: beyond it, a push of
+// a_max started one step later covers the half-width plus the fragment's radius plus rho(t),
+// the most the nearer side of the grown box can be away from a fragment inside it. The root of
+// a_max D(t - dt) = h + r + rho(t) with rho's two upper bounds (its linear chord part and its cap
+// 2 rot_m), the smaller of the two, plus a step (a threat first inside this window was safe to
+// wait on a step ago); the whole horizon when a_max does not outgrow 2 q2 (no guarantee then).
+double look_ahead_s(const Inflation& rho, double half_m, double a_max_mps2, double dt,
+                    double horizon_s) {
+  const double a = 0.5 * a_max_mps2 - rho.q2_mps2;
+  if (!(a > 0.0)) return horizon_s;
+  const auto root = [a](double b, double c) {
+    return (b + std::sqrt(b * b + 4.0 * a * c)) / (2 * a);
+  };
+  const double b = 0.5 * a_max_mps2 * dt + rho.q1_mps;
+  double t = root(b, half_m + 2.0 * rho.rot_m);
+  if (std::isfinite(rho.turn_radps)) t = std::min(t, root(b + rho.rot_m * rho.turn_radps, half_m));
+  return std::isfinite(t) ? std::min(t + dt, horizon_s) : horizon_s;
+}
+
+// The constant model's answer for one fragment: whether its path enters the box, and the least
+// push (need) along each way out.
+struct Nominal {
+  bool threat = false;
+  std::array<double, 4> need{};
+};
+
+Nominal nominal_push(const Coord& x, const Coord& y, const Coord& z, const Slabs& slabs,
+                     double horizon_s, double dt) {
+  Nominal out;
+  const Intervals in_z = within(z, slabs.lo[2], slabs.hi[2], horizon_s);
+  if (in_z.empty()) return out;
+  const Intervals in_x = within(x, slabs.lo[0], slabs.hi[0], horizon_s);
+  if (in_x.empty()) return out;
+  const Intervals in_y = within(y, slabs.lo[1], slabs.hi[1], horizon_s);
+  if (in_y.empty()) return out;
+  const Intervals in_xz = intersect(in_x, in_z);
+  const Intervals in_yz = intersect(in_y, in_z);
+  if (intersect(in_xz, in_y).empty()) return out;  // the path misses the box
+  out.threat = true;
+  // The four ways out, each the least push along one screen axis.
+  out.need = {
+      least_accel(y, slabs.hi[1], +1, in_xz, dt), least_accel(y, slabs.hi[1], -1, in_xz, dt),
+      least_accel(x, slabs.hi[0], +1, in_yz, dt), least_accel(x, slabs.hi[0], -1, in_yz, dt)};
+  return out;
+}
+
+std::size_t smallest(const std::array<double, 4>& need) {
+  return static_cast<std::size_t>(std::min_element(need.begin(), need.end()) - need.begin());
+}
+
 }  // namespace
+
+double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
+  const double declared = ctx.camera_max_accel_mps2;
+  return std::isfinite(declared) && declared > 0.0 ? declared : params_.camera_accel_mps2;
+}
+
+double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
+  const double declared = ctx.camera_max_turn_radps;
+  return std::isfinite(declared) && declared > 0.0 ? declared
+                                                   : params_.camera_turn_degps * kPi / 180.0;
+}
 
 void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const CameraPose& cam = ctx.camera;
@@ -108,51 +303,115 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double back_m = body.z() + params_.margin_m;
   const double horizon_s = std::max(ctx.duration_s - ctx.t_s, ctx.dt_s);
   const Eigen::Vector3d half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
+  const Eigen::Vector3d lo_m(-half_w_m, -half_h_m, -back_m);
+  const Eigen::Vector3d hi_m(half_w_m, half_h_m, front_m);
 
   // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
   // that never has all three coordinates inside the box grown by the fragment's radius, with a
   // margin the solves below agree with, is no threat. Most fragments end here.
   const BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
   const std::span<const char> clears =
-      clearance_.run(ctx.fragments, frame, half_g, Eigen::Vector3d(-half_w_m, -half_h_m, -back_m),
-                     Eigen::Vector3d(half_w_m, half_h_m, front_m), horizon_s);
+      clearance_.run(ctx.fragments, frame, half_g, lo_m, hi_m, horizon_s);
 
+  // The robust models' regions (see the header): about the constant-velocity path (bounded_accel)
+  // and about the eye now (V_c; both models). Each grows by the chord of the view's turn.
+  const bool robust = params_.camera_model != CameraModel::kConstant;
+  const double rot_m = Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)).norm();
+  const double turn_radps = assumed_turn_radps(ctx);
+  const bool ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
+  const bool use_accel = params_.camera_model == CameraModel::kBoundedAccel || !ball_known;
+  const Inflation accel_rho{0.0, 0.5 * assumed_accel_mps2(ctx), rot_m, turn_radps};
+  const Inflation ball_rho{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps};
+  // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
+  // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
+  const Inflation& reject_rho = use_accel ? accel_rho : ball_rho;
+  std::span<const char> grown_clears;
+  double look_s = 0.0;
+  if (robust && !ctx.fragments.empty()) {
+    double r_max_m = 0.0;
+    for (const FragmentState& f : ctx.fragments) r_max_m = std::max(r_max_m, f.radius_m);
+    look_s = look_ahead_s(reject_rho, std::min(half_w_m, half_h_m) + r_max_m, params_.a_max_mps2,
+                          ctx.dt_s, horizon_s);
+    const double grow_m = reject_rho.at(look_s);
+    const Eigen::Vector3d grow(grow_m, grow_m, grow_m);
+    const BoxFrame grown_frame{cam.eye_m,
+                               {cam.right, cam.up, cam.forward},
+                               use_accel ? ctx.camera_velocity_mps : Eigen::Vector3d::Zero()};
+    grown_clears =
+        grown_clearance_.run(ctx.fragments, grown_frame, half_g, lo_m - grow, hi_m + grow, look_s);
+  }
+
+  const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
   for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
-    if (clears[i]) continue;
+    const bool grown_clear = !robust || grown_clears[i];
+    if (clears[i] && grown_clear) continue;
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
     const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
     const double r = f.radius_m;
-    // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
-    // back (the camera's forward axis tilted toward the ground can).
-    if (d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0) continue;
+    const Slabs slabs{{-half_w_m - r, -half_h_m - r, -back_m - r},
+                      {half_w_m + r, half_h_m + r, front_m + r}};
     const Coord x{d.x(), w.x(), half_g.x()};
     const Coord y{d.y(), w.y(), half_g.y()};
     const Coord z{d.z(), w.z(), half_g.z()};
-    const Intervals in_z = within(z, -back_m - r, front_m + r, horizon_s);
-    if (in_z.empty()) continue;
-    const Intervals in_x = within(x, -half_w_m - r, half_w_m + r, horizon_s);
-    if (in_x.empty()) continue;
-    const Intervals in_y = within(y, -half_h_m - r, half_h_m + r, horizon_s);
-    if (in_y.empty()) continue;
-    const Intervals in_xz = intersect(in_x, in_z);
-    const Intervals in_yz = intersect(in_y, in_z);
-    if (intersect(in_xz, in_y).empty()) continue;  // the path misses the box
-    out.candidates.push_back(static_cast<int>(i));
-
-    // The four ways out, each the least push along one screen axis.
-    const std::array<double, 4> need{least_accel(y, half_h_m + r, +1, in_xz, ctx.dt_s),
-                                     least_accel(y, half_h_m + r, -1, in_xz, ctx.dt_s),
-                                     least_accel(x, half_w_m + r, +1, in_yz, ctx.dt_s),
-                                     least_accel(x, half_w_m + r, -1, in_yz, ctx.dt_s)};
-    const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-    const auto best =
-        static_cast<std::size_t>(std::min_element(need.begin(), need.end()) - need.begin());
+    Nominal nominal;
+    // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
+    // back (the camera's forward axis tilted toward the ground can).
+    const bool receding = d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
+    if (!clears[i] && !receding) nominal = nominal_push(x, y, z, slabs, horizon_s, ctx.dt_s);
+    const std::size_t best = smallest(nominal.need);
     // Already inside the box's shadow on every side: nothing finite helps; push toward the
     // nearest way out at the cap and let the report count it if it still hits.
-    const double accel = std::isfinite(need[best]) ? need[best] : 2.0 * params_.a_max_mps2 + 1.0;
-    if (accel <= 0.0) continue;
-    apply_capped(out, static_cast<int>(i), f.mass_kg * accel * dir[best], f.mass_kg,
+    const double a_nominal = !nominal.threat                     ? 0.0
+                             : std::isfinite(nominal.need[best]) ? nominal.need[best]
+                                                                 : 2.0 * params_.a_max_mps2 + 1.0;
+    if (!robust) {
+      if (!nominal.threat) continue;
+      out.candidates.push_back(static_cast<int>(i));
+      if (a_nominal <= 0.0) continue;
+      apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
+                   params_.a_max_mps2);
+      continue;
+    }
+
+    // The worst case over the look-ahead window.
+    std::array<Constraint, 2> cons_store;
+    std::size_t n_cons = 0;
+    if (use_accel) cons_store[n_cons++] = {{x, y, z}, accel_rho};
+    if (ball_known) {
+      // About the eye now: the fragment's own velocity, not the relative one.
+      const Eigen::Vector3d v = cam.dir_to_camera(f.velocity_mps);
+      cons_store[n_cons++] = {{Coord{d.x(), v.x(), half_g.x()}, Coord{d.y(), v.y(), half_g.y()},
+                               Coord{d.z(), v.z(), half_g.z()}},
+                              ball_rho};
+    }
+    const std::span<Constraint> cons(cons_store.data(), n_cons);
+    const WorstCase wc = grown_clear ? WorstCase{} : worst_case(cons, slabs, look_s, ctx.dt_s, 0.0);
+    if (!nominal.threat && !wc.threat) continue;
+    out.candidates.push_back(static_cast<int>(i));
+    if (wc.threat) {
+      // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
+      // moving the fragment by a dt t along its axis; from the next step on, a push of at most
+      // a_max moves it D(t - dt) per unit.
+      if (a_nominal > 0.0) {
+        const std::size_t k = best < 2 ? 1 : 0;
+        const double sign = best % 2 == 0 ? 1.0 : -1.0;
+        const double dv = sign * std::min(a_nominal, params_.a_max_mps2) * ctx.dt_s;
+        for (Constraint& con : cons) con.axis[k].c1 += dv;
+      }
+      const WorstCase wait = worst_case(cons, slabs, look_s, ctx.dt_s, ctx.dt_s);
+      const double a_wait = wait.threat ? wait.need[smallest(wait.need)] : 0.0;
+      if (!(a_wait <= params_.a_max_mps2)) {
+        const std::size_t wc_best = smallest(wc.need);
+        const double a_wc =
+            std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
+        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
+                     f.mass_kg, params_.a_max_mps2);
+        continue;
+      }
+    }
+    if (a_nominal <= 0.0) continue;
+    apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                  params_.a_max_mps2);
   }
 }

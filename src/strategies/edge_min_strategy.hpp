@@ -12,6 +12,24 @@
 // Why a box and not only the near plane: a fragment steered just past the near rectangle's edge
 // still hits a camera body wider than that rectangle, and debris falling onto the camera from
 // above never crosses the near plane at all.
+//
+// What the camera does before the fragment arrives (EdgeMinParams::camera_model, see
+// docs/camera_models.md):
+// - constant: it keeps its present velocity and orientation; the push above, nothing more.
+// - bounded_accel: its velocity changes by at most A per second and its view turns at most w per
+//   second, and it never moves faster than V_c. The protected box can then be anywhere within
+//   rho(t) of where the constant model puts it (or of where it is now, for V_c), so each axis of
+//   the box is grown by rho(t), a quadratic in t on each side of the turn's knee.
+// - reachable: it may be anywhere within V_c t of where it is (any acceleration) and turn at w.
+// Both robust models push lazily: the constant model's push while a push of at most a_max that
+// starts one step later would still clear the grown box, the grown box's least push (at least
+// the constant one's) once waiting would no longer be safe.
+//
+// Which bounds: the scene's declared ones (StepContext::camera_max_accel_mps2, _turn_radps)
+// when they are finite and positive; otherwise (+infinity: none declared, or a player with
+// instant turns; 0: not filled in) the parameters' assumed camera_accel_mps2 and
+// camera_turn_degps. A camera that turns instantly breaks bounded_accel's assumption; reachable
+// does not depend on A at all.
 
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/strategy.hpp"
@@ -33,9 +51,16 @@ class EdgeMinStrategy final : public Strategy {
     return 0.5 * (tau_s * tau_s + tau_s * dt_s);
   }
 
+  // The acceleration and turn-rate bounds the robust models use this step (rule above).
+  double assumed_accel_mps2(const StepContext& ctx) const;
+  double assumed_turn_radps(const StepContext& ctx) const;
+
  private:
   EdgeMinParams params_;
-  BoxClearance clearance_;  // work space kept between steps; holds no state of the run
+  // Work space kept between steps; holds no state of the run. The second rejects against the
+  // grown box of the robust models.
+  BoxClearance clearance_;
+  BoxClearance grown_clearance_;
 };
 
 }  // namespace fragsim

@@ -60,6 +60,12 @@ void validate(const EdgeMinParams& p) {
           "must be >= 0");
   require(std::isfinite(p.a_max_mps2) && p.a_max_mps2 >= 0, "edge-min.a_max_mps2", p.a_max_mps2,
           "must be >= 0");
+  // The assumed bounds stand in for a scene that declares none: they must be numbers to reason
+  // with (a camera that turns or accelerates without bound is `reachable`'s case, not infinity).
+  require(std::isfinite(p.camera_accel_mps2) && p.camera_accel_mps2 >= 0,
+          "edge-min.camera_accel_mps2", p.camera_accel_mps2, "must be finite and >= 0");
+  require(std::isfinite(p.camera_turn_degps) && p.camera_turn_degps >= 0,
+          "edge-min.camera_turn_degps", p.camera_turn_degps, "must be finite and >= 0");
 }
 
 }  // namespace

@@ -58,13 +58,13 @@ struct EdgeParams {
 enum class CameraModel {
   kConstant,      // keeps its present velocity and orientation (the first edge-min)
   kBoundedAccel,  // may change velocity at up to an acceleration bound and turn at a bounded rate
-  kReachable,     // may be anywhere within V_c t of where it is (the thesis's ball), any turn
+  kReachable,     // anywhere within V_c t of where it is (the thesis's ball): any acceleration
 };
 
 struct EdgeMinParams {
   double margin_m = 0.05;    // clearance kept beyond the rectangle's edge
   double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
-  CameraModel camera_model = CameraModel::kConstant;
+  CameraModel camera_model = CameraModel::kBoundedAccel;
   // The bounds assumed when the scene declares none (camera.mode = path or track); a scene that
   // declares its bounds (camera.mode = player) is taken at its word.
   double camera_accel_mps2 = 20.0;
