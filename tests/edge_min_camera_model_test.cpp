@@ -298,8 +298,7 @@ TEST(EdgeMinCameraModel, UndeclaredBoundsFallBackToTheParameters) {
   const EdgeMinStrategy s(p);
   const std::array<FragmentState, 1> frags{fragment({0, 0, -5}, {0, 0, 10.0})};
   StepContext ctx = context(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), frags);
-  for (double undeclared : {0.0, -1.0, std::numeric_limits<double>::infinity(),
-                            std::numeric_limits<double>::quiet_NaN()}) {
+  for (double undeclared : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
     ctx.camera_max_accel_mps2 = undeclared;
     ctx.camera_max_turn_radps = undeclared;
     EXPECT_EQ(s.assumed_accel_mps2(ctx), kA);
@@ -309,6 +308,34 @@ TEST(EdgeMinCameraModel, UndeclaredBoundsFallBackToTheParameters) {
   ctx.camera_max_turn_radps = 2.0;
   EXPECT_EQ(s.assumed_accel_mps2(ctx), 7.0);
   EXPECT_EQ(s.assumed_turn_radps(ctx), 2.0);
+}
+
+// A player with instant turns declares an infinite acceleration: bounded_accel then keeps only
+// the ball V_c t, which is exactly reachable's region, so the two give the same forces.
+TEST(EdgeMinCameraModel, DeclaredInfiniteAccelerationIsTheReachableBall) {
+  EdgeMinStrategy bounded(params(CameraModel::kBoundedAccel, 90.0));
+  EdgeMinStrategy reachable(params(CameraModel::kReachable, 90.0));
+  const std::array<FragmentState, 3> frags{fragment({0, 0, -5}, {0, 0, 10.0}),
+                                           fragment({0.3, 0.1, -3}, {-0.5, 0, 9.0}),
+                                           fragment({0, -0.2, -2}, {0, 0.4, 11.0})};
+  StepContext ctx = context(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0, 0), frags);
+  ctx.camera_max_accel_mps2 = std::numeric_limits<double>::infinity();
+  ctx.camera_max_turn_radps = 0.5 * kPi;
+  int pushed = 0;
+  for (double t : {0.0, 0.2, 0.25, 0.3}) {
+    ctx.t_s = t;
+    StepOutput a, b;
+    bounded.step(ctx, a);
+    reachable.step(ctx, b);
+    ASSERT_EQ(a.forces.size(), b.forces.size());
+    for (std::size_t i = 0; i < a.forces.size(); ++i) {
+      EXPECT_EQ(a.forces[i].fragment, b.forces[i].fragment);
+      EXPECT_EQ(a.forces[i].force_N, b.forces[i].force_N);
+      EXPECT_TRUE(a.forces[i].force_N.allFinite());
+    }
+    pushed += static_cast<int>(a.forces.size());
+  }
+  EXPECT_GT(pushed, 0);
 }
 
 TEST(EdgeMinCameraModel, WithAConstantCameraAndFarThreatsBoundedAccelIsTheConstantModel) {

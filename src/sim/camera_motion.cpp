@@ -2,7 +2,6 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
-#include <limits>
 
 #include "sim/camera_path.hpp"
 #include "sim/player_camera.hpp"
@@ -11,8 +10,7 @@
 namespace fragsim {
 
 CameraLimits declared_limits(const CameraDef& camera) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  CameraLimits limits{camera.max_speed_mps, kInf, kInf};
+  CameraLimits limits{camera.max_speed_mps, 0.0, 0.0};
   if (camera.mode == CameraMode::kPlayer) {
     limits.max_accel_mps2 = camera.player_accel_mps2;
     limits.max_turn_radps = camera.turn_rate_degps * kPi / 180.0;

@@ -21,9 +21,9 @@ class CameraMotion {
   virtual CameraPose pose_at(double t_s) const = 0;
 };
 
-// The camera's limits as the scene declares them, for the strategies. V_c always; acceleration
-// and turn rate only for a player (+infinity otherwise: a script or a track may start, stop and
-// turn at once).
+// The camera's limits as the scene declares them, for the strategies (StepContext's rule). V_c
+// always; acceleration and turn rate only for a player (its acceleration may be +infinity: instant
+// turns); 0, "not declared", for a path or a track, which may start, stop and turn at once.
 struct CameraLimits {
   double max_speed_mps = 0.0;
   double max_accel_mps2 = 0.0;

@@ -285,13 +285,12 @@ std::size_t smallest(const std::array<double, 4>& need) {
 
 double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
   const double declared = ctx.camera_max_accel_mps2;
-  return std::isfinite(declared) && declared > 0.0 ? declared : params_.camera_accel_mps2;
+  return declared > 0.0 ? declared : params_.camera_accel_mps2;  // NaN: not declared either
 }
 
 double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
   const double declared = ctx.camera_max_turn_radps;
-  return std::isfinite(declared) && declared > 0.0 ? declared
-                                                   : params_.camera_turn_degps * kPi / 180.0;
+  return declared > 0.0 ? declared : params_.camera_turn_degps * kPi / 180.0;
 }
 
 void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
@@ -319,8 +318,16 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double rot_m = Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)).norm();
   const double turn_radps = assumed_turn_radps(ctx);
   const bool ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
-  const bool use_accel = params_.camera_model == CameraModel::kBoundedAccel || !ball_known;
-  const Inflation accel_rho{0.0, 0.5 * assumed_accel_mps2(ctx), rot_m, turn_radps};
+  // Neither bound known (a library caller may pass V_c = inf): assume the parameters' bound.
+  const double accel_mps2 = std::isfinite(assumed_accel_mps2(ctx)) || ball_known
+                                ? assumed_accel_mps2(ctx)
+                                : params_.camera_accel_mps2;
+  // An unbounded acceleration leaves only the ball (0.5 A t^2 would be inf * 0 at t = 0).
+  const bool use_accel =
+      (params_.camera_model == CameraModel::kBoundedAccel && std::isfinite(accel_mps2)) ||
+      !ball_known;
+  const Inflation accel_rho{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0, rot_m,
+                            turn_radps};
   const Inflation ball_rho{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps};
   // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
   // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.

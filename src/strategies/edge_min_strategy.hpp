@@ -26,10 +26,10 @@
 // the constant one's) once waiting would no longer be safe.
 //
 // Which bounds: the scene's declared ones (StepContext::camera_max_accel_mps2, _turn_radps)
-// when they are finite and positive; otherwise (+infinity: none declared, or a player with
-// instant turns; 0: not filled in) the parameters' assumed camera_accel_mps2 and
-// camera_turn_degps. A camera that turns instantly breaks bounded_accel's assumption; reachable
-// does not depend on A at all.
+// when it declares them (> 0); otherwise (0: a path or a track, which declares none) the
+// parameters' assumed camera_accel_mps2 and camera_turn_degps. A declared infinite acceleration
+// (a player with instant turns) leaves bounded_accel only the ball V_c t, which is reachable's
+// region: it still holds, since reachable does not depend on A at all.
 
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/strategy.hpp"

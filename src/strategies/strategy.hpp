@@ -23,9 +23,10 @@ struct StepContext {
   CameraPose camera;  // as rendered now (scene near distance)
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();  // over the step being taken
   double camera_max_speed_mps = 0.0;                              // V_c
-  // The camera's declared limits beyond V_c, +infinity where the scene declares none (a scripted
-  // path or a replayed track may start, stop and turn instantly). A strategy that assumes a bound
-  // the scene does not declare says so in its own parameters.
+  // The camera's declared limits beyond V_c: 0 where the scene declares none (a scripted path or
+  // a replayed track may start, stop and turn at once, so it promises nothing), +infinity where it
+  // declares that there is no bound (a player with instant turns), else the bound. A strategy
+  // that assumes a bound the scene does not declare says so in its own parameters.
   double camera_max_accel_mps2 = 0.0;
   double camera_max_turn_radps = 0.0;
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
