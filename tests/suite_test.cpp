@@ -295,6 +295,7 @@ void expect_usage_error(const std::string& args, const std::string& option) {
 
 TEST(SuiteCommand, BadInputIsOneLineNamingTheOption) {
   expect_usage_error("suite --frobnicate", "--frobnicate");
+  expect_usage_error("suite front", "'front'");
   expect_usage_error("suite --seeds 0", "--seeds");
   expect_usage_error("suite --seeds many", "--seeds");
   expect_usage_error("suite --scenes nowhere", "--scenes");

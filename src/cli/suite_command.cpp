@@ -87,7 +87,12 @@ int cmd_suite(const std::vector<std::string>& args) {
       "help,h", "this help");
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(args).options(own).run(), vm);
+    const po::parsed_options parsed = po::command_line_parser(args).options(own).run();
+    // Without this a stray word (`fragsim suite front`) would silently start the whole battery.
+    const std::vector<std::string> extra =
+        po::collect_unrecognized(parsed.options, po::include_positional);
+    if (!extra.empty()) throw UsageError("unexpected argument '" + extra.front() + "'");
+    po::store(parsed, vm);
   } catch (const po::error& e) {
     throw UsageError(e.what());
   }
