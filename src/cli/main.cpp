@@ -12,6 +12,7 @@
 #include "cli/command_line.hpp"
 #include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
+#include "cli/suite_command.hpp"
 #include "cli/sweep_command.hpp"
 #include "metrics/atomic_file.hpp"
 #include "metrics/csv_export.hpp"
@@ -35,6 +36,7 @@ const char* kUsage =
     "  run      one strategy on a scene (with `none` as the deviation reference)\n"
     "  compare  every strategy on the same scene and seed\n"
     "  sweep    scene keys over values and seeds, every combination compared, one CSV file\n"
+    "  suite    every strategy on a fixed battery of scenes, seeds and camera modes: a verdict\n"
     "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
     "  bench    run time against error: step sizes, solvers, predictors, skips vs a reference\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
@@ -169,6 +171,7 @@ int main(int argc, char** argv) {
     if (command == "run") return cmd_run(args);
     if (command == "compare") return cmd_compare(args);
     if (command == "sweep") return cli::cmd_sweep(args);
+    if (command == "suite") return cli::cmd_suite(args);
     if (command == "render") return cli::cmd_render(args);
     if (command == "bench") return cli::cmd_bench(args);
     if (command == "--help" || command == "-h" || command == "help") {

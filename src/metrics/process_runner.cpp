@@ -75,10 +75,14 @@ int online_cpus() {
 }
 
 std::vector<std::string> run_in_processes(std::size_t count, int jobs,
-                                          const std::function<std::string(std::size_t)>& task) {
+                                          const std::function<std::string(std::size_t)>& task,
+                                          const std::function<void(std::size_t done)>& on_done) {
   std::vector<std::string> results(count);
   if (jobs <= 1 || count <= 1) {
-    for (std::size_t i = 0; i < count; ++i) results[i] = task(i);
+    for (std::size_t i = 0; i < count; ++i) {
+      results[i] = task(i);
+      if (on_done) on_done(i + 1);
+    }
     return results;
   }
   jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(jobs), count));
@@ -157,6 +161,7 @@ std::vector<std::string> run_in_processes(std::size_t count, int jobs,
         } else {
           results[h.task] = std::move(body);
           ++done;
+          if (on_done) on_done(done);
         }
       }
     }

@@ -16,8 +16,11 @@ namespace fragsim {
 // killed makes this throw std::runtime_error naming the task (after stopping the others).
 // Call it with no output file open for writing that a child could corrupt by exiting: children
 // leave through _exit and never run destructors or atexit handlers.
-std::vector<std::string> run_in_processes(std::size_t count, int jobs,
-                                          const std::function<std::string(std::size_t)>& task);
+// `on_done`, if set, is called in this process with the number of tasks finished so far each time
+// one finishes (for a progress line; results may finish out of order).
+std::vector<std::string> run_in_processes(
+    std::size_t count, int jobs, const std::function<std::string(std::size_t)>& task,
+    const std::function<void(std::size_t done)>& on_done = nullptr);
 
 // The number of online processors (at least 1).
 int online_cpus();

@@ -1,0 +1,209 @@
+#include "cli/suite_command.hpp"
+
+#include <unistd.h>
+
+#include <boost/program_options.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "cli/command_line.hpp"
+#include "cli/table.hpp"
+#include "metrics/atomic_file.hpp"
+#include "metrics/process_runner.hpp"
+#include "metrics/suite.hpp"
+
+namespace fragsim::cli {
+namespace {
+
+namespace po = boost::program_options;
+namespace fs = std::filesystem;
+
+std::string percent(double share) {
+  return fixed(100.0 * share, 1);
+}
+
+std::string join(const std::vector<std::string>& items, const std::string& sep) {
+  std::string s;
+  for (const std::string& i : items) s += (s.empty() ? "" : sep) + i;
+  return s;
+}
+
+void print_rows(const std::vector<SuiteRow>& rows, std::ostream& out) {
+  Table t({"strategy", "runs", "clean_%", "dev_mean_m", "misses_kept_%", "strat_ms"});
+  for (const SuiteRow& r : rows) {
+    const std::optional<double> kept = r.near_misses_kept();
+    t.add_row({r.variant, std::to_string(r.runs), percent(r.clean_share()),
+               fixed(r.deviation_mean_m, 4), kept ? percent(*kept) : "-",
+               fixed(r.strategy_ms_median, 4)});
+  }
+  t.print(out);
+}
+
+// Fails early, as a usage error, when FILE cannot be written: a probe through the same
+// temporary-file-and-rename path, removed again before the workers are forked.
+void check_out(const std::string& path, bool force) {
+  if (path.empty()) throw UsageError("--out: empty file name");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw UsageError("--out " + path + ": is a folder");
+  if (fs::exists(path, ec) && !force) {
+    throw UsageError("--out " + path + ": exists (use --force to overwrite)");
+  }
+  try {
+    const AtomicFile probe(path);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--out ") + e.what());
+  }
+}
+
+}  // namespace
+
+int cmd_suite(const std::vector<std::string>& args) {
+  std::string mode_names, scene_names;
+  for (const SuiteMode& m : suite_modes()) mode_names += (mode_names.empty() ? "" : ",") + m.name;
+  for (const SuiteSceneSpec& s : suite_scene_specs()) {
+    scene_names += (scene_names.empty() ? "" : ",") + s.scene;
+  }
+  const std::string full = std::to_string(suite_runs({}).size());
+  po::options_description own("suite options");
+  own.add_options()("seeds", po::value<int>()->default_value(kSuiteDefaultSeeds)->value_name("N"),
+                    ("seeds 1..N for every battery entry and camera mode (the default gives the "
+                     "full battery of " +
+                     full + " runs)")
+                        .c_str())(
+      "scenes", po::value<std::string>()->value_name("a,b"),
+      ("only these battery scenes (default: " + scene_names + ")").c_str())(
+      "modes", po::value<std::string>()->value_name("a,b"),
+      ("only these camera modes (default: " + mode_names + ")").c_str())(
+      "limit", po::value<long long>()->value_name("N"),
+      "only the first N runs of the selection, in battery order (a CI slice)")(
+      "scene-dir", po::value<std::string>()->default_value("data/scenes")->value_name("DIR"),
+      "where the battery's scene files are")(
+      "jobs", po::value<int>()->value_name("J"),
+      "worker processes (default: the number of online CPUs)")(
+      "out", po::value<std::string>()->value_name("FILE"),
+      "write the tidy CSV, one row per run and strategy")("force", "overwrite an existing FILE")(
+      "help,h", "this help");
+  po::variables_map vm;
+  try {
+    const po::parsed_options parsed = po::command_line_parser(args).options(own).run();
+    // Without this a stray word (`fragsim suite front`) would silently start the whole battery.
+    const std::vector<std::string> extra =
+        po::collect_unrecognized(parsed.options, po::include_positional);
+    if (!extra.empty()) throw UsageError("unexpected argument '" + extra.front() + "'");
+    po::store(parsed, vm);
+  } catch (const po::error& e) {
+    throw UsageError(e.what());
+  }
+  if (vm.count("help")) {
+    std::cout << "usage: fragsim suite [options]\n"
+              << "Runs every strategy on a fixed battery of scenes, explosion distances, aims and "
+                 "speeds, seeds and camera modes (README, Suite), and prints one table per mode "
+                 "and the most robust strategy.\n"
+              << own << '\n';
+    return 0;
+  }
+
+  SuiteSelection sel;
+  sel.seeds = vm["seeds"].as<int>();
+  if (vm.count("scenes")) {
+    sel.scenes = split_list(vm["scenes"].as<std::string>());
+    if (sel.scenes.empty()) throw UsageError("--scenes: no scene named");
+  }
+  if (vm.count("modes")) {
+    sel.modes = split_list(vm["modes"].as<std::string>());
+    if (sel.modes.empty()) throw UsageError("--modes: no mode named");
+  }
+  if (vm.count("limit")) {
+    const long long limit = vm["limit"].as<long long>();
+    if (limit < 1) throw UsageError("--limit " + std::to_string(limit) + ": must be >= 1");
+    sel.limit = static_cast<std::size_t>(limit);
+  }
+  std::vector<SuiteRun> runs;
+  try {
+    runs = suite_runs(sel);
+  } catch (const SuiteError& e) {
+    // suite_runs checks the seeds first, then the scenes, then the modes.
+    const std::string what = e.what();
+    const char* option = what.find("battery scene") != std::string::npos  ? "--scenes: "
+                         : what.find("battery mode") != std::string::npos ? "--modes: "
+                                                                          : "--seeds: ";
+    throw UsageError(option + what);
+  }
+  int jobs = online_cpus();
+  if (vm.count("jobs")) {
+    jobs = vm["jobs"].as<int>();
+    if (jobs < 1 || jobs > 1024) {
+      throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
+    }
+  }
+  std::optional<std::string> out_path;
+  if (vm.count("out")) {
+    out_path = vm["out"].as<std::string>();
+    check_out(*out_path, vm.count("force") > 0);
+  }
+  const std::string dir = vm["scene-dir"].as<std::string>();
+  const std::vector<SuiteVariant> variants = suite_variants();
+  std::map<std::string, std::string> scenes;
+  try {
+    scenes = load_suite_scenes(dir, runs);
+    validate_suite(scenes, runs, variants);
+  } catch (const SuiteError& e) {
+    throw UsageError("--scene-dir " + dir + ": " + e.what());
+  } catch (const SceneError& e) {
+    throw UsageError("--scene-dir " + dir + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--scene-dir " + dir + ": " + e.what());
+  }
+
+  const bool progress = ::isatty(STDERR_FILENO) == 1;
+  const std::vector<SuiteOutcome> outcomes =
+      run_suite(scenes, runs, variants, jobs, [&](std::size_t done) {
+        if (progress) std::fprintf(stderr, "\rsuite: %zu/%zu runs", done, runs.size());
+      });
+  if (progress) std::fputc('\n', stderr);
+
+  std::cout << "suite: " << runs.size() << " runs, " << variants.size()
+            << " strategy rows each (none first, the deviation reference)\n";
+  for (const SuiteMode& mode : suite_modes()) {
+    const auto in_mode = [&](std::size_t r) { return runs[r].mode == mode.name; };
+    const std::vector<SuiteRow> rows = aggregate_suite(outcomes, in_mode);
+    if (rows.empty()) continue;
+    std::vector<std::string> keys;
+    for (const SceneOverride& o : mode.overrides) keys.push_back(o.key + " = " + o.value);
+    std::cout << "\nmode " << mode.name << " (" << join(keys, ", ") << "): " << rows.front().runs
+              << " runs\n";
+    print_rows(rows, std::cout);
+  }
+  std::cout << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
+               "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
+               "misses over none's, summed over the runs; strat_ms: median over runs of the "
+               "median strategy ms per step.\n";
+  const std::vector<SuiteRow> player =
+      aggregate_suite(outcomes, [&](std::size_t r) { return is_player_mode(runs[r].mode); });
+  const std::vector<SuiteRow> all = aggregate_suite(outcomes);
+  const std::optional<SuiteRecommendation> best = recommend_suite(player, all);
+  std::cout << "most robust (highest clean share over the player runs, then over all runs, then "
+               "least mean deviation): ";
+  if (best) {
+    std::cout << best->variant << " (";
+    if (best->player_clean_share) {
+      std::cout << "clean in " << percent(*best->player_clean_share) << "% of player runs, ";
+    } else {
+      std::cout << "no player run selected; clean in ";
+    }
+    std::cout << percent(best->all_clean_share) << "% of all runs, mean deviation "
+              << fixed(best->deviation_mean_m, 4) << " m)\n";
+  } else {
+    std::cout << "-\n";
+  }
+  if (out_path) {
+    write_file_atomically(*out_path, suite_csv(runs, outcomes));
+    std::cout << "wrote " << *out_path << ": " << outcomes.size() << " rows (" << runs.size()
+              << " runs x " << variants.size() << " strategies)\n";
+  }
+  return 0;
+}
+
+}  // namespace fragsim::cli
