@@ -38,6 +38,10 @@ foreach(target fragsim_control_shared fragsim_control_static)
   set_target_properties(${target} PROPERTIES OUTPUT_NAME fragsim_control LINKER_LANGUAGE CXX)
 endforeach()
 target_compile_definitions(fragsim_control_static INTERFACE FRAGSIM_CONTROL_STATIC)
+# A C program (or any non-C++ link) using the static archive needs the C++ runtime it was built
+# with; a C++ link brings it already. (libstdc++: GCC's, and Clang's default on Linux.)
+target_link_libraries(fragsim_control_static INTERFACE
+  "$<$<NOT:$<LINK_LANGUAGE:CXX>>:stdc++>" "$<$<NOT:$<LINK_LANGUAGE:CXX>>:m>")
 set_target_properties(fragsim_control_shared PROPERTIES EXPORT_NAME control_shared
   VERSION ${FRAGSIM_CONTROL_VERSION} SOVERSION ${FRAGSIM_CONTROL_VERSION_MAJOR})
 set_target_properties(fragsim_control_static PROPERTIES EXPORT_NAME control_static)
