@@ -75,6 +75,16 @@ Failure check_vec(const fragsim_vec3& v, const char* name, bool (*rule)(double),
   return {};
 }
 
+// An enum field as the int the caller stored. A C caller may store any int in it, and loading
+// an out-of-range value as the enum type is undefined in C++: the bytes are read as an int.
+template <class E>
+int raw(const E& e) {
+  static_assert(sizeof(E) == sizeof(int));
+  int v;
+  std::memcpy(&v, &e, sizeof v);
+  return v;
+}
+
 Failure validate(const fragsim_controller_def& def) {
   if (def.internal_value != kDefCookie) {
     return fail(FRAGSIM_ERROR_DEF_NOT_DEFAULTED,
@@ -85,15 +95,16 @@ Failure validate(const fragsim_controller_def& def) {
                  def.horizon_cap_s, "must be finite and > 0"))) {
     return f;
   }
-  switch (def.strategy) {
+  switch (raw(def.strategy)) {
     case FRAGSIM_STRATEGY_EDGE_MIN: {
       const fragsim_edge_min_def& p = def.edge_min;
       if ((f = check(nonnegative(p.margin_m), "edge_min.margin_m", p.margin_m, "must be >= 0")) ||
           (f = check(nonnegative(p.a_max_mps2), "edge_min.a_max_mps2", p.a_max_mps2,
                      "must be >= 0")) ||
-          (f = check(p.camera_model >= FRAGSIM_CAMERA_CONSTANT &&
-                         p.camera_model <= FRAGSIM_CAMERA_REACHABLE,
-                     "edge_min.camera_model", p.camera_model, "must be a fragsim_camera_model")) ||
+          (f = check(raw(p.camera_model) >= FRAGSIM_CAMERA_CONSTANT &&
+                         raw(p.camera_model) <= FRAGSIM_CAMERA_REACHABLE,
+                     "edge_min.camera_model", raw(p.camera_model),
+                     "must be a fragsim_camera_model")) ||
           (f = check(nonnegative(p.camera_accel_mps2), "edge_min.camera_accel_mps2",
                      p.camera_accel_mps2, "must be >= 0")) ||
           (f = check(nonnegative(p.camera_turn_degps), "edge_min.camera_turn_degps",
@@ -106,17 +117,18 @@ Failure validate(const fragsim_controller_def& def) {
       const fragsim_edge_def& p = def.edge;
       if ((f = check(nonnegative(p.k_Nms2), "edge.k_Nms2", p.k_Nms2, "must be >= 0")) ||
           (f = check(nonnegative(p.a_max_mps2), "edge.a_max_mps2", p.a_max_mps2, "must be >= 0")) ||
-          (f = check(p.predictor == FRAGSIM_EDGE_PREDICTOR_THESIS ||
-                         p.predictor == FRAGSIM_EDGE_PREDICTOR_DISCRETE,
-                     "edge.predictor", p.predictor, "must be a fragsim_edge_predictor")) ||
-          (f = check(p.reach == FRAGSIM_EDGE_REACH_THESIS || p.reach == FRAGSIM_EDGE_REACH_GROWING,
-                     "edge.reach", p.reach, "must be a fragsim_edge_reach")) ||
-          (f = check(
-               p.horizon == FRAGSIM_EDGE_HORIZON_CAMERA || p.horizon == FRAGSIM_EDGE_HORIZON_GROUND,
-               "edge.horizon", p.horizon, "must be a fragsim_edge_horizon")) ||
-          (f = check(
-               p.replan >= FRAGSIM_EDGE_REPLAN_NEVER && p.replan <= FRAGSIM_EDGE_REPLAN_ALWAYS,
-               "edge.replan", p.replan, "must be a fragsim_edge_replan"))) {
+          (f = check(raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_THESIS ||
+                         raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_DISCRETE,
+                     "edge.predictor", raw(p.predictor), "must be a fragsim_edge_predictor")) ||
+          (f = check(raw(p.reach) == FRAGSIM_EDGE_REACH_THESIS ||
+                         raw(p.reach) == FRAGSIM_EDGE_REACH_GROWING,
+                     "edge.reach", raw(p.reach), "must be a fragsim_edge_reach")) ||
+          (f = check(raw(p.horizon) == FRAGSIM_EDGE_HORIZON_CAMERA ||
+                         raw(p.horizon) == FRAGSIM_EDGE_HORIZON_GROUND,
+                     "edge.horizon", raw(p.horizon), "must be a fragsim_edge_horizon")) ||
+          (f = check(raw(p.replan) >= FRAGSIM_EDGE_REPLAN_NEVER &&
+                         raw(p.replan) <= FRAGSIM_EDGE_REPLAN_ALWAYS,
+                     "edge.replan", raw(p.replan), "must be a fragsim_edge_replan"))) {
         return f;
       }
       return {};
@@ -131,7 +143,7 @@ Failure validate(const fragsim_controller_def& def) {
       return {};
     }
   }
-  return check(false, "strategy", def.strategy, "must be a fragsim_strategy");
+  return check(false, "strategy", raw(def.strategy), "must be a fragsim_strategy");
 }
 
 Failure validate_frame(const fragsim_camera& c) {
@@ -280,12 +292,12 @@ struct fragsim_controller {
   std::vector<int> previous;            // this step's fragment i was previous[i] then, or -1
 
   explicit fragsim_controller(const fragsim_controller_def& d) : def(d) {
-    switch (d.strategy) {
+    switch (raw(d.strategy)) {
       case FRAGSIM_STRATEGY_EDGE_MIN: {
         fragsim::EdgeMinParams p;
         p.margin_m = d.edge_min.margin_m;
         p.a_max_mps2 = d.edge_min.a_max_mps2;
-        p.camera_model = static_cast<fragsim::CameraModel>(d.edge_min.camera_model);
+        p.camera_model = static_cast<fragsim::CameraModel>(raw(d.edge_min.camera_model));
         p.camera_accel_mps2 = d.edge_min.camera_accel_mps2;
         p.camera_turn_degps = d.edge_min.camera_turn_degps;
         strategy = std::make_unique<fragsim::EdgeMinStrategy>(p);
@@ -295,10 +307,10 @@ struct fragsim_controller {
         fragsim::EdgeParams p;
         p.k = d.edge.k_Nms2;
         p.a_max_mps2 = d.edge.a_max_mps2;
-        p.predictor = static_cast<fragsim::Predictor>(d.edge.predictor);
-        p.reach = static_cast<fragsim::Reach>(d.edge.reach);
-        p.horizon = static_cast<fragsim::Horizon>(d.edge.horizon);
-        p.replan = static_cast<fragsim::Replan>(d.edge.replan);
+        p.predictor = static_cast<fragsim::Predictor>(raw(d.edge.predictor));
+        p.reach = static_cast<fragsim::Reach>(raw(d.edge.reach));
+        p.horizon = static_cast<fragsim::Horizon>(raw(d.edge.horizon));
+        p.replan = static_cast<fragsim::Replan>(raw(d.edge.replan));
         auto e = std::make_unique<fragsim::EdgeStrategy>(p);
         edge = e.get();
         strategy = std::move(e);

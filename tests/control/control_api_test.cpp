@@ -94,6 +94,13 @@ fragsim::StepContext context_for(const fragsim_step_input& in,
   return ctx;
 }
 
+// What a C caller can do and C++ may not (an enum object holding a value outside its range).
+template <class E>
+void set_raw(E& e, int v) {
+  static_assert(sizeof(E) == sizeof(int));
+  std::memcpy(&e, &v, sizeof v);
+}
+
 std::vector<fragsim_vec3> dense(const fragsim::StepOutput& out, std::size_t n) {
   std::vector<fragsim_vec3> f(n, fragsim_vec3{0.0, 0.0, 0.0});
   for (const fragsim::AppliedForce& a : out.forces) {
@@ -147,11 +154,11 @@ TEST(ControlApi, BadDefValuesAreRefusedNamingTheField) {
   const Case cases[] = {
       {[](fragsim_controller_def& d) { d.edge_min.a_max_mps2 = kNaN; }, "edge_min.a_max_mps2"},
       {[](fragsim_controller_def& d) { d.edge_min.margin_m = -0.01; }, "edge_min.margin_m"},
-      {[](fragsim_controller_def& d) { d.edge_min.camera_model = fragsim_camera_model(9); },
+      {[](fragsim_controller_def& d) { set_raw(d.edge_min.camera_model, 9); },
        "edge_min.camera_model"},
       {[](fragsim_controller_def& d) { d.horizon_cap_s = 0.0; }, "horizon_cap_s"},
       {[](fragsim_controller_def& d) { d.horizon_cap_s = kInf; }, "horizon_cap_s"},
-      {[](fragsim_controller_def& d) { d.strategy = fragsim_strategy(7); }, "strategy"},
+      {[](fragsim_controller_def& d) { set_raw(d.strategy, 7); }, "strategy"},
       {[](fragsim_controller_def& d) {
          d.strategy = FRAGSIM_STRATEGY_EDGE;
          d.edge.k_Nms2 = -1.0;
