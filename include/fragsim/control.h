@@ -38,8 +38,9 @@
    FRAGSIM_CONTROL_VERSION_PATCH)
 
 /* FRAGSIM_API marks every function of the library. FRAGSIM_CONTROL_STATIC is defined by the
- * static library's CMake target and pkg-config --static; FRAGSIM_CONTROL_BUILDING while building
- * the library. */
+ * static library's CMake target (fragsim::control_static); define it yourself when linking the
+ * static archive some other way (it matters on Windows only). FRAGSIM_CONTROL_BUILDING is defined
+ * while building the library. */
 #if defined(FRAGSIM_CONTROL_STATIC)
 #define FRAGSIM_API
 #elif defined(_WIN32)
