@@ -3,6 +3,7 @@
 #include <tuple>
 
 #include "metrics/camera_track.hpp"
+#include "metrics/control_dump.hpp"
 #include "metrics/cost_metric.hpp"
 #include "metrics/deviation_metric.hpp"
 #include "metrics/evaluation_codec.hpp"
@@ -36,7 +37,10 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   if (options.record) observers.push_back(options.record);
   observers.insert(observers.end(), options.extra.begin(), options.extra.end());
 
-  const RunTotals totals = simulate(scene, *strategy, observers);
+  std::optional<RecordingStrategy> recording;
+  if (options.control_dump) recording.emplace(*strategy, *options.control_dump);
+  const RunTotals totals =
+      simulate(scene, recording ? static_cast<Strategy&>(*recording) : *strategy, observers);
 
   Evaluation e;
   RunSummary& s = e.summary;

@@ -15,12 +15,14 @@
 namespace fragsim {
 
 class TrajectoryRecord;
+class ControlDump;
 
 struct EvaluationOptions {
   const TrajectoryRecord* reference = nullptr;  // the `none` run, for deviation; null: no deviation
   TrajectoryRecord* record = nullptr;           // filled with this run's trajectories if set
   bool occlusion = true;                        // rasterise the screen every step
   std::vector<RunObserver*> extra;              // more observers (a trajectory writer, ...)
+  ControlDump* control_dump = nullptr;          // records the strategy's inputs and forces if set
 };
 
 struct Evaluation {

@@ -13,6 +13,22 @@ void EdgeStrategy::reset(int fragment_count) {
   predicted_.assign(static_cast<std::size_t>(fragment_count), 0);
 }
 
+void EdgeStrategy::carry_over(std::span<const int> previous) {
+  auto remap = [&previous](std::vector<char>& state, char fresh) {
+    std::vector<char> next(previous.size(), fresh);
+    for (std::size_t i = 0; i < previous.size(); ++i) {
+      const int j = previous[i];
+      if (j >= 0 && static_cast<std::size_t>(j) < state.size()) {
+        next[i] = state[static_cast<std::size_t>(j)];
+      }
+    }
+    state.swap(next);
+  };
+  remap(candidate_, 1);
+  remap(pushed_, 0);
+  remap(predicted_, 0);
+}
+
 bool EdgeStrategy::should_examine(const StepContext& ctx, std::size_t i) const {
   if (candidate_[i]) return true;
   switch (params_.replan) {

@@ -5,6 +5,7 @@
 // near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
 // candidate.
 
+#include <span>
 #include <vector>
 
 #include "strategies/collision_prediction.hpp"
@@ -19,6 +20,13 @@ class EdgeStrategy final : public Strategy {
   std::string name() const override { return "edge"; }
   void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
+
+  // For a caller whose fragments come and go between steps (the controller library): re-index
+  // the run state to the coming step's fragment list. previous[i] is the index fragment i had in
+  // the last step, or -1 for a fragment new to the run, which is examined at its first step as
+  // every fragment is at t = 0. Fragments absent from `previous` are forgotten. Without this
+  // call the fragment list is taken to be the same as at the last step.
+  void carry_over(std::span<const int> previous);
 
  private:
   bool should_examine(const StepContext& ctx, std::size_t i) const;

@@ -1,0 +1,211 @@
+// The controller library's per-step cost (project issue 12): one fragsim_controller_step through
+// the C API, the way a game calls it, at 1,728, 15,625 and 100,000 fragments (front.ini's aimed
+// blast at splits 12, 25 and 47, the last cut to 100,000), in flight (0.3 s after the explosion,
+// moved on their ballistic paths) and with 90% of them resting on the ground (zero velocity,
+// touched). Counters: s_per_fragment (shown in ns), the share the cheap box rejection settles
+// (edge-min: BoxClearance on the same box edge-min uses, counted outside the timed loop; deflect-
+// all: fragments out of range or receding), and the candidates and pushes of the step. The first
+// call (every id new) is made before timing: the loop measures the steady state.
+// Run: build/release/bench/fragsim_bench --benchmark_filter=Control --benchmark_repetitions=3
+//      --benchmark_report_aggregates_only
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "fragsim/control.h"
+#include "sim/camera_motion.hpp"
+#include "sim/explosion.hpp"
+#include "sim/scene_file.hpp"
+#include "strategies/cheap_rejection.hpp"
+#include "strategies/edge_min_strategy.hpp"
+
+namespace {
+
+constexpr double kInFlightAt_s = 0.3;
+
+struct Setup {
+  fragsim_step_input input{};
+  std::vector<fragsim_fragment> fragments;
+  fragsim::CameraPose pose;
+  Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();
+};
+
+fragsim_vec3 vec(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+Setup make_setup(int count, bool resting) {
+  fragsim::Scene scene = fragsim::load_scene(FRAGSIM_DATA_DIR "/scenes/front.ini");
+  scene.object.splits = count <= 1728 ? 12 : count <= 15625 ? 25 : 47;
+  const auto motion = fragsim::make_camera_motion(scene);
+  const Eigen::Vector3d g = scene.sim.gravity_mps2;
+  const double t = kInFlightAt_s;
+  Setup s;
+  const auto spawned = fragsim::explode(scene, *motion);
+  for (std::size_t i = 0; i < spawned.size() && static_cast<int>(i) < count; ++i) {
+    fragsim_fragment f{};
+    const double r = spawned[i].half_extents_m.norm();
+    Eigen::Vector3d p = spawned[i].position_m + spawned[i].velocity_mps * t + 0.5 * g * t * t;
+    Eigen::Vector3d v = spawned[i].velocity_mps + g * t;
+    // 9 of every 10 at rest on the ground when asked.
+    if (resting && i % 10 != 0) {
+      p.y() = scene.ground.height_m + r;
+      v.setZero();
+      f.touched = 1;
+    }
+    f.position_m = vec(p);
+    f.velocity_mps = vec(v);
+    f.radius_m = r;
+    f.mass_kg = spawned[i].mass_kg;
+    f.id = 1000 + i;
+    s.fragments.push_back(f);
+  }
+  s.pose = motion->pose_at(t);
+  s.camera_velocity_mps = motion->velocity_at(t);
+  fragsim_step_input& in = s.input;
+  in.time_s = t;
+  in.end_time_s = INFINITY;
+  in.dt_s = scene.sim.dt_s;
+  in.gravity_mps2 = vec(g);
+  in.ground_height_m = scene.ground.height_m;
+  in.camera = fragsim_default_camera();
+  in.camera.eye_m = vec(s.pose.eye_m);
+  in.camera.right = vec(s.pose.right);
+  in.camera.up = vec(s.pose.up);
+  in.camera.forward = vec(s.pose.forward);
+  in.camera.velocity_mps = vec(s.camera_velocity_mps);
+  in.camera.fovy_deg = s.pose.fovy_deg;
+  in.camera.aspect = s.pose.aspect;
+  in.camera.near_m = s.pose.near_m;
+  in.camera.far_m = s.pose.far_m;
+  in.camera.body_half_m = vec(0.5 * scene.camera.body_size_m);
+  in.camera.max_speed_mps = scene.camera.max_speed_mps;
+  in.fragments = s.fragments.data();
+  in.fragment_count = static_cast<int32_t>(s.fragments.size());
+  return s;
+}
+
+// The share of fragments edge-min's first test settles (edge_min_strategy.cpp's box, default
+// parameters, the def's 3 s look-ahead).
+double edge_min_rejected_share(const Setup& s, double horizon_s) {
+  const fragsim::EdgeMinParams p;
+  const fragsim::CameraPose& cam = s.pose;
+  const Eigen::Vector3d body(s.input.camera.body_half_m.x, s.input.camera.body_half_m.y,
+                             s.input.camera.body_half_m.z);
+  const double half_w = std::max(cam.near_half_width_m(), body.x()) + p.margin_m;
+  const double half_h = std::max(cam.near_half_height_m(), body.y()) + p.margin_m;
+  const double front = std::max(cam.near_m, body.z()) + p.margin_m;
+  const double back = body.z() + p.margin_m;
+  const Eigen::Vector3d g(s.input.gravity_mps2.x, s.input.gravity_mps2.y, s.input.gravity_mps2.z);
+  std::vector<fragsim::FragmentState> states;
+  for (const fragsim_fragment& f : s.fragments) {
+    fragsim::FragmentState st;
+    st.position_m = {f.position_m.x, f.position_m.y, f.position_m.z};
+    st.velocity_mps = {f.velocity_mps.x, f.velocity_mps.y, f.velocity_mps.z};
+    st.radius_m = f.radius_m;
+    states.push_back(st);
+  }
+  fragsim::BoxClearance clearance;
+  const fragsim::BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, s.camera_velocity_mps};
+  const auto clears = clearance.run(states, frame, 0.5 * cam.dir_to_camera(g),
+                                    Eigen::Vector3d(-half_w, -half_h, -back),
+                                    Eigen::Vector3d(half_w, half_h, front), horizon_s);
+  const auto n = static_cast<double>(std::count(clears.begin(), clears.end(), 1));
+  return n / static_cast<double>(states.size());
+}
+
+void BM_ControlStep(benchmark::State& state, fragsim_strategy strategy, bool resting) {
+  const Setup s = make_setup(static_cast<int>(state.range(0)), resting);
+  fragsim_controller_def def = fragsim_default_controller_def();
+  def.strategy = strategy;
+  fragsim_controller* ctl = nullptr;
+  if (fragsim_controller_create(&def, &ctl, nullptr, 0) != FRAGSIM_OK) {
+    state.SkipWithError("create failed");
+    return;
+  }
+  std::vector<fragsim_vec3> forces(s.fragments.size());
+  fragsim_step_stats stats{};
+  // The first call sees every id for the first time (the id table fills): not the steady state.
+  if (fragsim_controller_step(ctl, &s.input, forces.data(), &stats) != FRAGSIM_OK) {
+    state.SkipWithError(fragsim_controller_last_error(ctl));
+    fragsim_controller_destroy(ctl);
+    return;
+  }
+  for (auto _ : state) {
+    fragsim_controller_step(ctl, &s.input, forces.data(), &stats);
+    benchmark::DoNotOptimize(forces.data());
+    benchmark::ClobberMemory();
+  }
+  fragsim_controller_destroy(ctl);
+  const auto n = static_cast<double>(s.fragments.size());
+  state.counters["fragments"] = n;
+  state.counters["s_per_fragment"] = benchmark::Counter(
+      n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["candidates"] = stats.candidates;
+  state.counters["pushed"] = stats.pushed;
+  state.counters["rejected_cheaply_share"] = strategy == FRAGSIM_STRATEGY_EDGE_MIN
+                                                 ? edge_min_rejected_share(s, def.horizon_cap_s)
+                                                 : 1.0 - stats.pushed / n;
+}
+
+// edge-min's own step on the same inputs, without the C API (validation, copy into the tool's
+// fragment states, id check, force scatter): what the boundary costs.
+void BM_ControlEdgeMinDirect(benchmark::State& state, bool resting) {
+  const Setup s = make_setup(static_cast<int>(state.range(0)), resting);
+  std::vector<fragsim::FragmentState> states;
+  for (const fragsim_fragment& f : s.fragments) {
+    fragsim::FragmentState st;
+    st.position_m = {f.position_m.x, f.position_m.y, f.position_m.z};
+    st.velocity_mps = {f.velocity_mps.x, f.velocity_mps.y, f.velocity_mps.z};
+    st.radius_m = f.radius_m;
+    st.mass_kg = f.mass_kg;
+    st.touched = f.touched != 0;
+    states.push_back(st);
+  }
+  fragsim::StepContext ctx;
+  ctx.t_s = s.input.time_s;
+  ctx.dt_s = s.input.dt_s;
+  ctx.duration_s = s.input.time_s + 3.0;
+  ctx.camera = s.pose;
+  ctx.camera_velocity_mps = s.camera_velocity_mps;
+  ctx.camera_max_speed_mps = s.input.camera.max_speed_mps;
+  ctx.camera_max_accel_mps2 = INFINITY;
+  ctx.camera_max_turn_radps = INFINITY;
+  ctx.camera_body_half_m = {s.input.camera.body_half_m.x, s.input.camera.body_half_m.y,
+                            s.input.camera.body_half_m.z};
+  ctx.gravity_mps2 = {s.input.gravity_mps2.x, s.input.gravity_mps2.y, s.input.gravity_mps2.z};
+  ctx.ground_height_m = s.input.ground_height_m;
+  ctx.fragments = states;
+  fragsim::EdgeMinStrategy strategy{fragsim::EdgeMinParams{}};
+  fragsim::StepOutput out;
+  strategy.step(ctx, out);
+  for (auto _ : state) {
+    out.clear();
+    strategy.step(ctx, out);
+    benchmark::DoNotOptimize(out.forces.data());
+  }
+  const auto n = static_cast<double>(states.size());
+  state.counters["fragments"] = n;
+  state.counters["s_per_fragment"] = benchmark::Counter(
+      n, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void sizes(benchmark::internal::Benchmark* b) {
+  for (int n : {1728, 15625, 100000}) b->Arg(n);
+  b->Unit(benchmark::kMicrosecond);
+}
+
+BENCHMARK_CAPTURE(BM_ControlStep, edge_min_in_flight, FRAGSIM_STRATEGY_EDGE_MIN, false)
+    ->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlStep, edge_min_resting, FRAGSIM_STRATEGY_EDGE_MIN, true)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlStep, deflect_all_in_flight, FRAGSIM_STRATEGY_DEFLECT_ALL, false)
+    ->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlStep, deflect_all_resting, FRAGSIM_STRATEGY_DEFLECT_ALL, true)
+    ->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlEdgeMinDirect, in_flight, false)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlEdgeMinDirect, resting, true)->Apply(sizes);
+
+}  // namespace

@@ -1,0 +1,307 @@
+/* fragsim control: keeps explosion debris off a game camera's near plane.
+ *
+ * Once per physics step, before the engine integrates, the game hands the controller its camera
+ * and its fragments (position, velocity, size, mass, an id); the controller writes one force per
+ * fragment, in newtons, for the engine to apply during that step. Most forces are zero: only the
+ * fragments whose paths would meet the camera are pushed, toward the nearest screen edge, so they
+ * leave the picture through its border instead of being cut open by the near plane.
+ *
+ *   fragsim_controller_def def = fragsim_default_controller_def();
+ *   fragsim_controller* ctl = NULL;
+ *   if (fragsim_controller_create(&def, &ctl, NULL, 0) != FRAGSIM_OK) { ... }
+ *   each step: fill a fragsim_step_input, call fragsim_controller_step, apply the forces
+ *   fragsim_controller_destroy(ctl);
+ *
+ * Threads: the library creates none and has no global state. One controller must be used by one
+ * thread at a time (its calls are not synchronised); different controllers are independent and
+ * may be used from different threads at once. fragsim_default_* and fragsim_version are safe from
+ * any thread.
+ *
+ * Errors: every function that can fail returns a fragsim_status; no function throws, aborts or
+ * writes a non-finite number to the caller. Units are SI, in every field's name: _m metres, _mps
+ * metres per second, _mps2 metres per second squared, _s seconds, _kg kilograms, _N newtons,
+ * _deg degrees, _degps and _radps degrees and radians per second.
+ *
+ * C99; also compiles as C++. */
+#ifndef FRAGSIM_CONTROL_H
+#define FRAGSIM_CONTROL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FRAGSIM_CONTROL_VERSION_MAJOR 0
+#define FRAGSIM_CONTROL_VERSION_MINOR 1
+#define FRAGSIM_CONTROL_VERSION_PATCH 0
+/* major * 10000 + minor * 100 + patch, for #if comparisons. */
+#define FRAGSIM_CONTROL_VERSION                                                  \
+  (FRAGSIM_CONTROL_VERSION_MAJOR * 10000 + FRAGSIM_CONTROL_VERSION_MINOR * 100 + \
+   FRAGSIM_CONTROL_VERSION_PATCH)
+
+/* FRAGSIM_API marks every function of the library. FRAGSIM_CONTROL_STATIC is defined by the
+ * static library's CMake target (fragsim::control_static); define it yourself when linking the
+ * static archive some other way (it matters on Windows only). FRAGSIM_CONTROL_BUILDING is defined
+ * while building the library. */
+#if defined(FRAGSIM_CONTROL_STATIC)
+#define FRAGSIM_API
+#elif defined(_WIN32)
+#if defined(FRAGSIM_CONTROL_BUILDING)
+#define FRAGSIM_API __declspec(dllexport)
+#else
+#define FRAGSIM_API __declspec(dllimport)
+#endif
+#elif defined(__GNUC__)
+#define FRAGSIM_API __attribute__((visibility("default")))
+#else
+#define FRAGSIM_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct fragsim_vec3 {
+  double x, y, z;
+} fragsim_vec3;
+
+typedef enum fragsim_status {
+  FRAGSIM_OK = 0,
+  FRAGSIM_ERROR_NULL_ARGUMENT = 1, /* a required pointer is NULL */
+  FRAGSIM_ERROR_DEF_NOT_DEFAULTED =
+      2,                              /* the def did not come from fragsim_default_controller_def */
+  FRAGSIM_ERROR_INVALID_ARGUMENT = 3, /* a number out of range or not finite, a bad enum value */
+  FRAGSIM_ERROR_DUPLICATE_ID = 4,     /* two fragments of one call share an id */
+  FRAGSIM_ERROR_OUT_OF_MEMORY = 5,
+  FRAGSIM_ERROR_INTERNAL = 6 /* a computed force was not finite (a bug: please report it) */
+} fragsim_status;
+
+/* Which force strategy the controller runs (fragsim's README compares them). */
+typedef enum fragsim_strategy {
+  /* The least constant push that takes a fragment just past the nearest screen edge before it
+   * arrives, re-solved every step: no gain to tune; the recommended choice. */
+  FRAGSIM_STRATEGY_EDGE_MIN = 0,
+  /* The 2012 thesis's method: candidates by the camera's reachable ball, force k |V| / (d^2 t). */
+  FRAGSIM_STRATEGY_EDGE = 1,
+  /* Every approaching fragment within range pushed away from the view axis (a baseline). */
+  FRAGSIM_STRATEGY_DEFLECT_ALL = 2
+} fragsim_strategy;
+
+/* What edge-min assumes the camera does before a fragment arrives. */
+typedef enum fragsim_camera_model {
+  FRAGSIM_CAMERA_CONSTANT = 0,      /* keeps its present velocity and orientation */
+  FRAGSIM_CAMERA_BOUNDED_ACCEL = 1, /* may accelerate and turn within bounds */
+  FRAGSIM_CAMERA_REACHABLE = 2      /* may be anywhere within V_c t of where it is */
+} fragsim_camera_model;
+
+typedef enum fragsim_edge_predictor {
+  FRAGSIM_EDGE_PREDICTOR_THESIS = 0,  /* the parabola from the velocity as read */
+  FRAGSIM_EDGE_PREDICTOR_DISCRETE = 1 /* semi-implicit Euler's parabola, velocity + g dt / 2 */
+} fragsim_edge_predictor;
+
+typedef enum fragsim_edge_reach {
+  FRAGSIM_EDGE_REACH_THESIS = 0, /* the fixed ball V_c (t_G - t) around the camera */
+  FRAGSIM_EDGE_REACH_GROWING = 1 /* the ball V_c (t - now) that grows with time: fewer candidates */
+} fragsim_edge_reach;
+
+typedef enum fragsim_edge_horizon {
+  FRAGSIM_EDGE_HORIZON_CAMERA =
+      0,                          /* a fragment "lands" when it falls through the camera's height */
+  FRAGSIM_EDGE_HORIZON_GROUND = 1 /* ... through the ground height */
+} fragsim_edge_horizon;
+
+typedef enum fragsim_edge_replan {
+  FRAGSIM_EDGE_REPLAN_NEVER = 0,   /* the thesis: a fragment is examined only while a candidate */
+  FRAGSIM_EDGE_REPLAN_CONTACT = 1, /* ... and again after it touched something or was pushed */
+  FRAGSIM_EDGE_REPLAN_ALWAYS = 2   /* every fragment every step: safest, slowest */
+} fragsim_edge_replan;
+
+typedef struct fragsim_edge_min_def {
+  /* Clearance kept beyond the screen edge. Larger: safer against camera moves, more fragments
+   * pushed and further. Default 0.05. */
+  double margin_m;
+  /* Cap on the imposed acceleration. Higher saves close explosions but makes the swerve visible;
+   * lower looks natural but lets close fragments through (stats.capped counts them). Default 50. */
+  double a_max_mps2;
+  /* What the camera is assumed to do before a fragment arrives. Default FRAGSIM_CAMERA_CONSTANT. */
+  fragsim_camera_model camera_model;
+  /* Camera acceleration assumed when the camera declares no bound (max_accel_mps2 = INFINITY),
+   * for the bounded-acceleration model. Larger: more fragments pushed. Default 20. */
+  double camera_accel_mps2;
+  /* Turn rate assumed when the camera declares none (max_turn_radps = INFINITY), for the
+   * bounded-acceleration model. Larger: more fragments pushed. Default 90. */
+  double camera_turn_degps;
+} fragsim_edge_min_def;
+
+typedef struct fragsim_edge_def {
+  /* Gain of the thesis's force (3.4). Larger saves close explosions and over-steers distant ones
+   * (the thesis's fig. 4.6). Default 1. */
+  double k_Nms2;
+  /* Cap on the imposed acceleration. Default 50. */
+  double a_max_mps2;
+  fragsim_edge_predictor predictor; /* default FRAGSIM_EDGE_PREDICTOR_THESIS */
+  fragsim_edge_reach reach;         /* default FRAGSIM_EDGE_REACH_THESIS */
+  fragsim_edge_horizon horizon;     /* default FRAGSIM_EDGE_HORIZON_CAMERA */
+  fragsim_edge_replan replan;       /* default FRAGSIM_EDGE_REPLAN_NEVER */
+} fragsim_edge_def;
+
+typedef struct fragsim_deflect_all_def {
+  /* Push away from the view axis. Larger clears faster and looks more forced. Default 60. */
+  double accel_mps2;
+  /* Only fragments closer than this to the eye are pushed. Larger: more fragments moved. 6. */
+  double range_m;
+} fragsim_deflect_all_def;
+
+/* Settings of one controller. Must be initialised with fragsim_default_controller_def(), then
+ * changed field by field; fragsim_controller_create refuses a def that was not. */
+typedef struct fragsim_controller_def {
+  fragsim_strategy strategy; /* default FRAGSIM_STRATEGY_EDGE_MIN */
+  fragsim_edge_min_def edge_min;
+  fragsim_edge_def edge;
+  fragsim_deflect_all_def deflect_all;
+  /* How far ahead a fragment's path is examined. A game has no scene end, so the look-ahead is
+   * this cap (or step input end_time_s - time_s when sooner). Longer: threats seen earlier and
+   * pushed more gently, more paths examined, and more pushes that a later camera move makes
+   * needless. Default 3: a thrown fragment at 10 m/s covers 30 m, and fragsim's shipped scenes
+   * last 3 s. */
+  double horizon_cap_s;
+  /* Private: set by fragsim_default_controller_def; do not touch. */
+  int32_t internal_value;
+} fragsim_controller_def;
+
+/* The camera at the start of the step. */
+typedef struct fragsim_camera {
+  fragsim_vec3 eye_m;
+  /* Orthonormal (each unit length and at right angles within 1e-6): screen right, screen up and
+   * the view direction, in world coordinates. */
+  fragsim_vec3 right;
+  fragsim_vec3 up;
+  fragsim_vec3 forward;
+  fragsim_vec3 velocity_mps; /* the eye's velocity over the step being taken */
+  double fovy_deg;           /* vertical field of view, in (0, 180) */
+  double aspect;             /* width over height, > 0 */
+  double near_m;             /* near clip distance, > 0 */
+  double far_m;              /* far clip distance, > near_m */
+  fragsim_vec3 body_half_m;  /* half size of the camera's body, a box centred on the eye; >= 0 */
+  double max_speed_mps;      /* V_c: the fastest the player can move the camera; >= 0 */
+  /* The camera's declared bounds; INFINITY where the game declares none (edge-min's bounded
+   * model then assumes its def's camera_accel_mps2 and camera_turn_degps). >= 0, not NaN. */
+  double max_accel_mps2;
+  double max_turn_radps;
+} fragsim_camera;
+
+/* One fragment as the engine sees it after its last step. */
+typedef struct fragsim_fragment {
+  fragsim_vec3 position_m;   /* centre of mass */
+  fragsim_vec3 velocity_mps; /* linear velocity */
+  double radius_m;           /* bounding sphere radius, >= 0 */
+  double mass_kg;            /* >= 0; the force is mass times the chosen acceleration */
+  /* The engine's handle for this fragment, unique within a call. The controller keeps state per
+   * id between calls (edge); an id it has not seen before is a new fragment. */
+  uint64_t id;
+  uint8_t touched; /* nonzero: had a contact in the last step (edge's replan = contact) */
+} fragsim_fragment;
+
+/* Everything one step needs. Plain data: fill it every step (or keep it and update it). */
+typedef struct fragsim_step_input {
+  /* The caller's clock at the start of this step. Only differences of times are used. */
+  double time_s;
+  /* When the shot ends, if known (a cut-scene); INFINITY in a game. Paths are examined up to
+   * min(end_time_s, time_s + horizon_cap_s). */
+  double end_time_s;
+  double dt_s; /* the coming physics step, > 0 */
+  fragsim_vec3 gravity_mps2;
+  double ground_height_m; /* height of the ground plane (y up) */
+  fragsim_camera camera;
+  const fragsim_fragment* fragments; /* may be NULL when fragment_count is 0 */
+  int32_t fragment_count;            /* >= 0 */
+} fragsim_step_input;
+
+/* The same fragments as strided arrays the engine already has: element i of an array is at byte
+ * offset i * stride from its start. position_m, velocity_mps: 3 doubles each; radius_m, mass_kg:
+ * one double; id: one uint64_t; touched: one uint8_t, or NULL for "no contacts". force_N, the
+ * output: 3 doubles per fragment. */
+typedef struct fragsim_fragment_arrays {
+  const double* position_m;
+  size_t position_stride_bytes;
+  const double* velocity_mps;
+  size_t velocity_stride_bytes;
+  const double* radius_m;
+  size_t radius_stride_bytes;
+  const double* mass_kg;
+  size_t mass_stride_bytes;
+  const uint64_t* id;
+  size_t id_stride_bytes;
+  const uint8_t* touched;
+  size_t touched_stride_bytes;
+  double* force_N;
+  size_t force_stride_bytes;
+} fragsim_fragment_arrays;
+
+/* What one step did. */
+typedef struct fragsim_step_stats {
+  int32_t candidates;  /* fragments whose path was found to threaten the camera */
+  int32_t pushed;      /* fragments given a nonzero force */
+  int32_t capped;      /* forces a_max cut down: these fragments may still hit */
+  int32_t guarded;     /* singular spots guarded (a fragment at the eye, a contact now) */
+  int32_t new_ids;     /* fragments whose id the controller had not seen at its last step */
+  int32_t dropped_ids; /* ids of the last step absent from this one (their state is forgotten) */
+} fragsim_step_stats;
+
+typedef struct fragsim_controller fragsim_controller;
+
+/* The library's version, FRAGSIM_CONTROL_VERSION of the build (compare with the header's). */
+FRAGSIM_API int32_t fragsim_version(void);
+FRAGSIM_API const char* fragsim_version_string(void);
+
+/* A short English name of a status ("invalid argument"); never NULL. */
+FRAGSIM_API const char* fragsim_status_string(fragsim_status status);
+
+FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void);
+
+/* A still camera at the origin looking down -z, fragsim's default frustum (fovy 60, 16:9, near
+ * 0.1 m, far 500 m), body 0.3 x 0.2 x 0.3 m, V_c 3 m/s, no declared acceleration or turn bound. */
+FRAGSIM_API fragsim_camera fragsim_default_camera(void);
+
+/* Creates a controller. On failure *out_controller is NULL and, when message is not NULL, a
+ * NUL-terminated reason naming the field and its value is written there (cut to message_size). */
+FRAGSIM_API fragsim_status fragsim_controller_create(const fragsim_controller_def* def,
+                                                     fragsim_controller** out_controller,
+                                                     char* message, size_t message_size);
+
+/* Destroys a controller; NULL is allowed. */
+FRAGSIM_API void fragsim_controller_destroy(fragsim_controller* controller);
+
+/* Forgets every fragment: the next step treats all ids as new. */
+FRAGSIM_API void fragsim_controller_reset(fragsim_controller* controller);
+
+/* One physics step: writes input->fragment_count forces into forces_N (the caller's array, one
+ * per fragment, in the order of input->fragments; zero for most). stats may be NULL.
+ *
+ * On any status other than FRAGSIM_OK: forces_N, when not NULL, is filled with zeros for the
+ * input's fragment count (when that count is valid), *stats is zeroed, the controller's state is
+ * as before the call (after FRAGSIM_ERROR_OUT_OF_MEMORY, call fragsim_controller_reset) and
+ * fragsim_controller_last_error says why.
+ *
+ * Fragments come and go by id: a new id is examined at its first step as every fragment is at
+ * the explosion (edge: a candidate until its first prediction says otherwise); an id absent from
+ * a call is forgotten, and if it returns it is new again. */
+FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller* controller,
+                                                   const fragsim_step_input* input,
+                                                   fragsim_vec3* forces_N,
+                                                   fragsim_step_stats* stats);
+
+/* The same with the fragments as strided arrays (input->fragments is ignored, and count is
+ * used instead of input->fragment_count); forces go to arrays->force_N. */
+FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller* controller,
+                                                          const fragsim_step_input* input,
+                                                          const fragsim_fragment_arrays* arrays,
+                                                          int32_t count, fragsim_step_stats* stats);
+
+/* Why the controller's last failed call failed ("" after a successful one). Valid until the next
+ * call on this controller; never NULL (also for a NULL controller). */
+FRAGSIM_API const char* fragsim_controller_last_error(const fragsim_controller* controller);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRAGSIM_CONTROL_H */
