@@ -121,13 +121,15 @@ typedef struct fragsim_edge_min_def {
   /* Cap on the imposed acceleration. Higher saves close explosions but makes the swerve visible;
    * lower looks natural but lets close fragments through (stats.capped counts them). Default 50. */
   double a_max_mps2;
-  /* What the camera is assumed to do before a fragment arrives. Default FRAGSIM_CAMERA_CONSTANT. */
+  /* What the camera is assumed to do before a fragment arrives (fragsim's docs/camera_models.md).
+   * CONSTANT pushes least but a player who swerves can close on a pushed fragment; the default
+   * FRAGSIM_CAMERA_BOUNDED_ACCEL promises a miss while the camera honours its bounds. */
   fragsim_camera_model camera_model;
-  /* Camera acceleration assumed when the camera declares no bound (max_accel_mps2 = INFINITY),
-   * for the bounded-acceleration model. Larger: more fragments pushed. Default 20. */
+  /* Camera acceleration assumed when the camera declares no bound (max_accel_mps2 = 0), for the
+   * bounded-acceleration model. Larger: more fragments pushed. Default 20. */
   double camera_accel_mps2;
-  /* Turn rate assumed when the camera declares none (max_turn_radps = INFINITY), for the
-   * bounded-acceleration model. Larger: more fragments pushed. Default 90. */
+  /* Turn rate assumed when the camera declares none (max_turn_radps = 0), for the robust models.
+   * Larger: more fragments pushed. Default 90. */
   double camera_turn_degps;
 } fragsim_edge_min_def;
 
@@ -182,8 +184,10 @@ typedef struct fragsim_camera {
   double far_m;              /* far clip distance, > near_m */
   fragsim_vec3 body_half_m;  /* half size of the camera's body, a box centred on the eye; >= 0 */
   double max_speed_mps;      /* V_c: the fastest the player can move the camera; >= 0 */
-  /* The camera's declared bounds; INFINITY where the game declares none (edge-min's bounded
-   * model then assumes its def's camera_accel_mps2 and camera_turn_degps). >= 0, not NaN. */
+  /* The camera's declared bounds: 0 where the game declares none (edge-min's robust models then
+   * assume the def's camera_accel_mps2 and camera_turn_degps); INFINITY where there is none (a
+   * player who changes velocity at once: the bounded model then keeps only the ball V_c t, the
+   * reachable model's region); else the bound. >= 0, not NaN. */
   double max_accel_mps2;
   double max_turn_radps;
 } fragsim_camera;

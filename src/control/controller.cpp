@@ -25,7 +25,6 @@ namespace {
 // skipped the defaults function, and its other fields may be garbage.
 constexpr std::int32_t kDefCookie = 0x46534331;  // "FSC1"
 constexpr std::int32_t kMaxFragments = std::numeric_limits<std::int32_t>::max() / 4;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kFrameTolerance = 1e-6;
 
 // A failed check: the status and the message that goes with it.
@@ -553,8 +552,8 @@ FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
   c.far_m = 500.0;
   c.body_half_m = {0.15, 0.1, 0.15};
   c.max_speed_mps = 3.0;
-  c.max_accel_mps2 = kInf;
-  c.max_turn_radps = kInf;
+  c.max_accel_mps2 = 0.0;  // not declared
+  c.max_turn_radps = 0.0;
   return c;
 }
 

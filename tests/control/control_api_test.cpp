@@ -124,7 +124,7 @@ TEST(ControlApi, DefaultsAreTheToolsDefaults) {
   EXPECT_EQ(d.strategy, FRAGSIM_STRATEGY_EDGE_MIN);
   EXPECT_EQ(d.edge_min.margin_m, em.margin_m);
   EXPECT_EQ(d.edge_min.a_max_mps2, em.a_max_mps2);
-  EXPECT_EQ(d.edge_min.camera_model, FRAGSIM_CAMERA_CONSTANT);
+  EXPECT_EQ(d.edge_min.camera_model, FRAGSIM_CAMERA_BOUNDED_ACCEL);  // the tool's default
   EXPECT_EQ(d.edge_min.camera_accel_mps2, em.camera_accel_mps2);
   EXPECT_EQ(d.edge_min.camera_turn_degps, em.camera_turn_degps);
   EXPECT_EQ(d.edge.k_Nms2, e.k);
@@ -363,7 +363,7 @@ TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
         EXPECT_EQ(f.z, expect);
       }
     }
-    // Undeclared camera bounds (INFINITY) are valid, and a refused call left no trace: the next
+    // Undeclared camera bounds (0) are valid, and a refused call left no trace: the next
     // good call sees both fragments as new.
     std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 7),
                                         fragment(0.1, 0.0, -4.0, 0.0, 0.0, 10.0, 8)};
