@@ -21,6 +21,7 @@
 #include "metrics/csv_export.hpp"
 #include "metrics/evaluation.hpp"
 #include "metrics/sweep.hpp"
+#include "sim/input_file.hpp"
 #include "sim/scene_file.hpp"
 #include "strategies/registry.hpp"
 
@@ -179,11 +180,11 @@ SweepPlan plan_sweep(const ParsedCommand& p) {
   // The scene file's text, read once: every job's scene is parsed from it with its overrides.
   if (p.options.count("scene")) {
     plan.origin = p.options["scene"].as<std::string>();
-    std::ifstream in(plan.origin, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw UsageError(plan.origin + ": cannot read scene file");
-    plan.scene_text = text.str();
+    try {
+      plan.scene_text = read_input_file(plan.origin, "scene file");
+    } catch (const InputError& e) {
+      throw UsageError(e.what());
+    }
   }
   for (const auto& opt : scene_options().options()) {
     const std::string& key = opt->long_name();

@@ -7,6 +7,7 @@
 #include <variant>
 
 #include "metrics/atomic_file.hpp"
+#include "sim/input_file.hpp"
 #include "sim/number_format.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/world.hpp"
@@ -250,8 +251,7 @@ void write_comparison_csv(const std::string& dir, const Scene& scene,
 }
 
 std::vector<RunSummary> read_summary_csv(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::istringstream in(read_input_file(path, "summary file"));
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + ":1: empty file");
   const std::vector<std::string> header = split(line);

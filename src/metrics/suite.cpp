@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -11,6 +10,7 @@
 #include "metrics/evaluation_codec.hpp"
 #include "metrics/process_runner.hpp"
 #include "metrics/trajectory_record.hpp"
+#include "sim/input_file.hpp"
 #include "sim/number_format.hpp"
 #include "strategies/registry.hpp"
 
@@ -179,11 +179,11 @@ std::map<std::string, std::string> load_suite_scenes(const std::string& dir,
   for (const SuiteRun& r : runs) {
     if (out.count(r.scene)) continue;
     const std::string path = dir + "/" + r.scene + ".ini";
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw SuiteError(path + ": cannot read the battery's scene file");
-    out.emplace(r.scene, text.str());
+    try {
+      out.emplace(r.scene, read_input_file(path, "battery scene file"));
+    } catch (const InputError& e) {
+      throw SuiteError(e.what());
+    }
   }
   return out;
 }

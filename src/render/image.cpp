@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "metrics/atomic_file.hpp"
+#include "sim/input_file.hpp"
 
 namespace fragsim {
 
@@ -106,9 +107,7 @@ void write_png(const std::string& path, const Image& image) {
 }
 
 Image read_png(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot read");
-  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const std::string bytes = read_input_file(path, "PNG file");
   try {
     return decode_png(bytes);
   } catch (const std::runtime_error& e) {
