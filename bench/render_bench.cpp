@@ -8,7 +8,7 @@
 #include "render/frame_renderer.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace {
 

@@ -7,7 +7,7 @@
 
 #include "sim/scene_file.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace {
 

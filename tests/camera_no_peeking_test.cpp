@@ -11,7 +11,7 @@
 #include "sim/player_camera.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -10,7 +10,7 @@
 
 #include "metrics/evaluation.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -7,7 +7,7 @@
 
 #include "sim/simulation.hpp"
 #include "strategies/collision_prediction.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

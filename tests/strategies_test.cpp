@@ -8,7 +8,7 @@
 #include "metrics/near_plane_metric.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/near_plane_strategy.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "run_fragsim.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim {
 namespace {

@@ -15,7 +15,7 @@
 #include "run_fragsim.hpp"
 #include "sim/number_format.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

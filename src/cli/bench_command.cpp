@@ -10,7 +10,7 @@
 #include "cli/table.hpp"
 #include "metrics/atomic_file.hpp"
 #include "metrics/time_vs_error.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {
 namespace {

@@ -21,7 +21,7 @@
 #include "metrics/process_runner.hpp"
 #include "metrics/trajectory_writer.hpp"
 #include "report/html_report.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace po = boost::program_options;
 using namespace fragsim;

@@ -12,7 +12,7 @@
 #include "metrics/evaluation.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {
 namespace {

@@ -23,7 +23,7 @@
 #include "metrics/sweep.hpp"
 #include "sim/input_file.hpp"
 #include "sim/scene_file.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "metrics/strategy_activity_metric.hpp"
 #include "metrics/trajectory_record.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim {
 

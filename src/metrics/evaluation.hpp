@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "metrics/run_summary.hpp"
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 

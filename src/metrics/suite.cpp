@@ -12,7 +12,7 @@
 #include "metrics/trajectory_record.hpp"
 #include "sim/input_file.hpp"
 #include "sim/number_format.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim {
 namespace {

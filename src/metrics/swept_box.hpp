@@ -7,8 +7,8 @@
 #include <Eigen/Core>
 #include <optional>
 
-#include "sim/camera_pose.hpp"
-#include "sim/fragment_state.hpp"
+#include "geometry/camera_pose.hpp"
+#include "geometry/fragment_state.hpp"
 
 namespace fragsim {
 

@@ -10,7 +10,7 @@
 #include "metrics/near_plane_metric.hpp"
 #include "sim/number_format.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 
 namespace fragsim {
 namespace {

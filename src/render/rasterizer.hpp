@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "render/image.hpp"
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 
 namespace fragsim {
 

@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

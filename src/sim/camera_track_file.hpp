@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 
 namespace fragsim {
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "sim/fragment_state.hpp"
+#include "geometry/fragment_state.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

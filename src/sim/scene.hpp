@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 #include "strategies/strategy_params.hpp"
 
 namespace fragsim {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "sim/camera_pose.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/explosion.hpp"
-#include "sim/fragment_state.hpp"
+#include "geometry/fragment_state.hpp"
 #include "sim/scene.hpp"
 #include "strategies/strategy.hpp"
 

@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-#include "sim/fragment_state.hpp"
+#include "geometry/fragment_state.hpp"
 
 namespace fragsim {
 

@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
-#include "sim/camera_pose.hpp"
-#include "sim/fragment_state.hpp"
+#include "geometry/camera_pose.hpp"
+#include "geometry/fragment_state.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/first_root.hpp"
 #include "strategies/strategy_params.hpp"

@@ -38,8 +38,8 @@ void validate(const DeflectAllParams& p) {
           "must be >= 0");
 }
 
-void validate(const NearPlaneParams& p, const CameraDef& camera) {
-  require(std::isfinite(p.min_near_m) && p.min_near_m > 0 && p.min_near_m <= camera.near_m,
+void validate(const NearPlaneParams& p, double camera_near_m) {
+  require(std::isfinite(p.min_near_m) && p.min_near_m > 0 && p.min_near_m <= camera_near_m,
           "near-plane.min_near_m", p.min_near_m, "must be > 0 and <= camera.near_m");
   require(std::isfinite(p.margin_m) && p.margin_m >= 0, "near-plane.margin_m", p.margin_m,
           "must be >= 0");
@@ -76,18 +76,18 @@ const std::vector<std::string>& strategy_names() {
   return names;
 }
 
-std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scene) {
+std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& scene) {
   if (name == "none") return std::make_unique<NoneStrategy>();
   if (name == "wall") {
     validate(scene.wall);
-    return std::make_unique<WallStrategy>(scene.wall, scene.camera);
+    return std::make_unique<WallStrategy>(scene.wall, scene.camera_fovy_deg, scene.camera_aspect);
   }
   if (name == "deflect-all") {
     validate(scene.deflect_all);
     return std::make_unique<DeflectAllStrategy>(scene.deflect_all);
   }
   if (name == "near-plane") {
-    validate(scene.near_plane, scene.camera);
+    validate(scene.near_plane, scene.camera_near_m);
     return std::make_unique<NearPlaneStrategy>(scene.near_plane);
   }
   if (name == "edge") {

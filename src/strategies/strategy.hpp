@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/camera_pose.hpp"
-#include "sim/fragment_state.hpp"
+#include "geometry/camera_pose.hpp"
+#include "geometry/fragment_state.hpp"
 
 namespace fragsim {
 

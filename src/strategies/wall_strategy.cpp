@@ -4,12 +4,12 @@
 
 namespace fragsim {
 
-WallStrategy::WallStrategy(const WallParams& params, const CameraDef& camera) {
+WallStrategy::WallStrategy(const WallParams& params, double fovy_deg, double aspect) {
   // Sized to the frustum's cross-section at the wall's far face, so no fragment reaches the near
   // plane around its rim.
   CameraPose frustum;
-  frustum.fovy_deg = camera.fovy_deg;
-  frustum.aspect = camera.aspect;
+  frustum.fovy_deg = fovy_deg;
+  frustum.aspect = aspect;
   const double far_face_m = params.distance_m + 0.5 * params.thickness_m;
   spec_.distance_m = params.distance_m;
   spec_.thickness_m = params.thickness_m;

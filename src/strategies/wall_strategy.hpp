@@ -2,14 +2,15 @@
 // `wall`: a transparent kinematic box carried in front of the camera that fragments bounce off
 // (thesis fig. 2.1). The strategy itself applies no force; the wall lives in the physics world.
 
-#include "sim/scene.hpp"
 #include "strategies/strategy.hpp"
+#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 
 class WallStrategy final : public Strategy {
  public:
-  WallStrategy(const WallParams& params, const CameraDef& camera);
+  // Sized to the camera's frustum (vertical field of view, aspect).
+  WallStrategy(const WallParams& params, double fovy_deg, double aspect);
   std::string name() const override { return "wall"; }
   WorldNeeds needs() const override;
   void reset(int) override {}

@@ -25,7 +25,7 @@
 #include "sim/number_format.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/registry.hpp"
+#include "sim/scene_strategies.hpp"
 #include "stress_scenes.hpp"
 
 namespace fragsim::stress {
