@@ -7,8 +7,8 @@
 #include "render/frame_recorder.hpp"
 #include "render/frame_renderer.hpp"
 #include "sim/scene_file.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include "sim/scene_file.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 #include "metrics/evaluation.hpp"
 #include "sim/player_camera.hpp"
 #include "sim/scene_file.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -9,8 +9,8 @@
 #include <array>
 
 #include "metrics/evaluation.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -5,9 +5,9 @@
 
 #include <array>
 
+#include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/collision_prediction.hpp"
-#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

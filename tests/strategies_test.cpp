@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "metrics/near_plane_metric.hpp"
+#include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/near_plane_strategy.hpp"
-#include "sim/scene_strategies.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

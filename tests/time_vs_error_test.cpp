@@ -14,8 +14,8 @@
 #include "metrics/time_vs_error.hpp"
 #include "run_fragsim.hpp"
 #include "sim/number_format.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 #include "test_scenes.hpp"
 
 namespace fragsim {

@@ -13,8 +13,8 @@
 #include "metrics/process_runner.hpp"
 #include "metrics/strategy_activity_metric.hpp"
 #include "metrics/trajectory_record.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace fragsim {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "metrics/run_summary.hpp"
 #include "geometry/camera_pose.hpp"
+#include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 

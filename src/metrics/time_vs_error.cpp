@@ -9,8 +9,8 @@
 #include "metrics/accuracy_probe.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "sim/number_format.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace fragsim {
 namespace {

@@ -16,8 +16,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "render/image.hpp"
 #include "geometry/camera_pose.hpp"
+#include "render/image.hpp"
 
 namespace fragsim {
 

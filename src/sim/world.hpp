@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
-#include "sim/explosion.hpp"
 #include "geometry/fragment_state.hpp"
+#include "sim/explosion.hpp"
 #include "sim/scene.hpp"
 #include "strategies/strategy.hpp"
 

@@ -24,8 +24,8 @@
 #include "metrics/evaluation.hpp"
 #include "sim/number_format.hpp"
 #include "sim/scene_file.hpp"
-#include "sim/simulation.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 #include "stress_scenes.hpp"
 
 namespace fragsim::stress {
