@@ -442,27 +442,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   }
 
   const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-  for (std::size_t i = 0; i < n; ++i) {
-    if (budget && deferred_[i]) {
-      if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});
-      continue;
-    }
-    // What this step gives fragment i, for a later step that defers it.
-    const std::size_t forces_before = out.forces.size();
-    struct Remember {
-      bool on;
-      std::vector<Eigen::Vector3d>& last;
-      std::size_t i;
-      const StepOutput& out;
-      std::size_t before;
-      ~Remember() {
-        if (on)
-          last[i] =
-              out.forces.size() > before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
-      }
-    } remember{budget, last_force_N_, i, out, forces_before};
-    const bool grown_clear = !robust || grown_clears[i];
-    if (clears[i] && grown_clear) continue;
+  // The exact solve of one fragment the rejections left in doubt: its force, if any, goes to out.
+  const auto solve = [&](std::size_t i, bool grown_clear) {
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
     const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
@@ -487,12 +468,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                              : std::isfinite(nominal.need[best]) ? nominal.need[best]
                                                                  : 2.0 * params_.a_max_mps2 + 1.0;
     if (!robust) {
-      if (!nominal.threat) continue;
+      if (!nominal.threat) return;
       out.candidates.push_back(static_cast<int>(i));
-      if (a_nominal <= 0.0) continue;
+      if (a_nominal <= 0.0) return;
       apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                    params_.a_max_mps2);
-      continue;
+      return;
     }
 
     // The worst case over the look-ahead window.
@@ -510,7 +491,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     const double own_look_s = std::min(look_s, own_horizon_s);
     const WorstCase wc =
         grown_clear ? WorstCase{} : worst_case(cons, slabs, own_look_s, ctx.dt_s, 0.0);
-    if (!nominal.threat && !wc.threat) continue;
+    if (!nominal.threat && !wc.threat) return;
     out.candidates.push_back(static_cast<int>(i));
     if (wc.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
@@ -530,12 +511,28 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
             std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
         apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
                      f.mass_kg, params_.a_max_mps2);
-        continue;
+        return;
       }
     }
-    if (a_nominal <= 0.0) continue;
+    if (a_nominal <= 0.0) return;
     apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                  params_.a_max_mps2);
+  };
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (budget && deferred_[i]) {
+      if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});
+      continue;
+    }
+    const bool grown_clear = !robust || grown_clears[i];
+    const bool cleared = clears[i] && grown_clear;
+    const std::size_t forces_before = out.forces.size();
+    if (!cleared) solve(i, grown_clear);
+    // What this step gave fragment i, for a later step that defers it.
+    if (budget) {
+      last_force_N_[i] =
+          out.forces.size() > forces_before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
+    }
   }
 }
 
