@@ -168,7 +168,7 @@ void BM_ControlEdgeMinDirect(benchmark::State& state, bool resting) {
   fragsim::StepContext ctx;
   ctx.t_s = s.input.time_s;
   ctx.dt_s = s.input.dt_s;
-  ctx.duration_s = s.input.time_s + 3.0;
+  ctx.end_time_s = s.input.end_time_s;
   ctx.camera = s.pose;
   ctx.camera_velocity_mps = s.camera_velocity_mps;
   ctx.camera_max_speed_mps = s.input.camera.max_speed_mps;

@@ -130,16 +130,14 @@ PREDICT_BENCH(SceneKind::kThesis1000, thesis1000);
 template <class S>
 class StepCapture final : public fragsim::Strategy {
  public:
-  StepCapture(S inner, int at, double duration_s)
-      : inner_(std::move(inner)), at_(at), duration_s_(duration_s) {}
+  StepCapture(S inner, int at) : inner_(std::move(inner)), at_(at) {}
   std::string name() const override { return inner_.name(); }
   fragsim::WorldNeeds needs() const override { return inner_.needs(); }
   void reset(int fragment_count) override { inner_.reset(fragment_count); }
   void step(const fragsim::StepContext& run_ctx, fragsim::StepOutput& out) override {
-    // The run stops after step `at`, but the strategy must see the scene's real length (edge caps
-    // t_G by it), or its candidates would differ from a full run's.
+    // The run stops after step `at`; the strategies' look-ahead does not depend on the scene's
+    // length, so the context is the full run's.
     fragsim::StepContext ctx = run_ctx;
-    ctx.duration_s = duration_s_;
     if (ctx.step == at_) {
       saved_ = std::make_unique<S>(inner_);
       ctx_ = ctx;
@@ -155,7 +153,6 @@ class StepCapture final : public fragsim::Strategy {
  private:
   S inner_;
   int at_;
-  double duration_s_;
   std::unique_ptr<S> saved_;
   fragsim::StepContext ctx_;
   std::vector<FragmentState> states_;
@@ -172,7 +169,7 @@ void BM_StrategyStep(benchmark::State& state, S strategy) {
   const int splits = static_cast<int>(state.range(0));
   const int at = static_cast<int>(state.range(1));
   const Scene full = scene_of(SceneKind::kAimed, splits);
-  StepCapture<S> capture(std::move(strategy), at, full.sim.duration_s);
+  StepCapture<S> capture(std::move(strategy), at);
   const auto totals = fragsim::simulate(up_to(full, at), capture);
   const fragsim::StepContext& ctx = capture.context();
   fragsim::StepOutput out;

@@ -57,7 +57,7 @@ StepContext context(const Eigen::Vector3d& eye_m, const Eigen::Vector3d& cam_v_m
   StepContext ctx;
   ctx.t_s = t_s;
   ctx.dt_s = kDt;
-  ctx.duration_s = duration_s;
+  ctx.end_time_s = duration_s;  // the shot's end, as the old scene duration
   ctx.camera.eye_m = eye_m;
   ctx.camera_velocity_mps = cam_v_mps;
   ctx.camera_max_speed_mps = kVc;

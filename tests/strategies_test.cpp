@@ -83,8 +83,11 @@ TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
 }
 
 TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
-  // The thesis ball: V_c (t_G - t) + radii = 1 m/s * 1.5 s + 0.27 m < 2 m.
-  const Outcome o = run(test::single_fragment(kBeside), "edge");
+  // The thesis ball: V_c (t_G - t) + radii = 1 m/s * 1.5 s + 0.27 m < 2 m, with t_G the cap of
+  // 1.5 s (zero gravity: the path never comes down; the default 3 s cap would give 3.27 m).
+  Scene scene = test::single_fragment(kBeside);
+  scene.edge.horizon_cap_s = 1.5;
+  const Outcome o = run(scene, "edge");
   for (const auto& step : o.rec.steps) {
     EXPECT_TRUE(step.candidates.empty());
     EXPECT_TRUE(step.forces.empty());

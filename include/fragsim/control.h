@@ -30,7 +30,7 @@
 #include <stdint.h>
 
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 1
+#define FRAGSIM_CONTROL_VERSION_MINOR 2
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -131,6 +131,12 @@ typedef struct fragsim_edge_min_def {
   /* Turn rate assumed when the camera declares none (max_turn_radps = 0), for the robust models.
    * Larger: more fragments pushed. Default 90. */
   double camera_turn_degps;
+  /* Per-step budget: at most this many fragments that survive the cheap rejection are solved
+   * exactly per call, the soonest to arrive first (distance to the eye over closing speed); the
+   * others are deferred and get the force of the last call that solved them (kept per id; none
+   * for a fragment never solved), and stats.deferred counts them. Smaller: a bounded cost per
+   * call, and late or stale pushes when many fragments threaten at once. 0 (default): no cap. */
+  int32_t max_solves;
 } fragsim_edge_min_def;
 
 typedef struct fragsim_edge_def {
@@ -159,11 +165,13 @@ typedef struct fragsim_controller_def {
   fragsim_edge_min_def edge_min;
   fragsim_edge_def edge;
   fragsim_deflect_all_def deflect_all;
-  /* How far ahead a fragment's path is examined. A game has no scene end, so the look-ahead is
-   * this cap (or step input end_time_s - time_s when sooner). Longer: threats seen earlier and
+  /* The look-ahead's cap. The horizon comes from the physics: edge-min examines a fragment's
+   * path until it reaches the ground (its centre at ground_height_m plus its radius, going down:
+   * the path means nothing after it bounces), edge until it falls through its horizon height
+   * (t_G); a path that never comes down (no ground, gravity off) is examined this far ahead, and
+   * none further (nor past step input end_time_s when sooner). Longer: threats seen earlier and
    * pushed more gently, more paths examined, and more pushes that a later camera move makes
-   * needless. Default 3: a thrown fragment at 10 m/s covers 30 m, and fragsim's shipped scenes
-   * last 3 s. */
+   * needless. Default 3: a thrown fragment at 10 m/s covers 30 m. */
   double horizon_cap_s;
   /* Private: set by fragsim_default_controller_def; do not touch. */
   int32_t internal_value;
@@ -208,12 +216,12 @@ typedef struct fragsim_fragment {
 typedef struct fragsim_step_input {
   /* The caller's clock at the start of this step. Only differences of times are used. */
   double time_s;
-  /* When the shot ends, if known (a cut-scene); INFINITY in a game. Paths are examined up to
-   * min(end_time_s, time_s + horizon_cap_s). */
+  /* When the shot ends, if known (a cut-scene): an optional extra cap, no path is examined past
+   * it; INFINITY in a game (and in fragsim itself). */
   double end_time_s;
   double dt_s; /* the coming physics step, > 0 */
   fragsim_vec3 gravity_mps2;
-  double ground_height_m; /* height of the ground plane (y up) */
+  double ground_height_m; /* height of the ground plane (y up); -INFINITY: no ground */
   fragsim_camera camera;
   const fragsim_fragment* fragments; /* may be NULL when fragment_count is 0 */
   int32_t fragment_count;            /* >= 0 */
@@ -248,6 +256,7 @@ typedef struct fragsim_step_stats {
   int32_t guarded;     /* singular spots guarded (a fragment at the eye, a contact now) */
   int32_t new_ids;     /* fragments whose id the controller had not seen at its last step */
   int32_t dropped_ids; /* ids of the last step absent from this one (their state is forgotten) */
+  int32_t deferred; /* fragments edge_min.max_solves left unsolved (they kept their last force) */
 } fragsim_step_stats;
 
 typedef struct fragsim_controller fragsim_controller;

@@ -90,6 +90,10 @@ Failure validate(const fragsim_controller_def& def) {
                 "def: not initialised with fragsim_default_controller_def()");
   }
   Failure f;
+  if ((f = check(def.edge_min.max_solves >= 0, "edge_min.max_solves", def.edge_min.max_solves,
+                 "must be >= 0 (0: no cap)"))) {
+    return f;
+  }
   if ((f = check(def.horizon_cap_s > 0.0 && std::isfinite(def.horizon_cap_s), "horizon_cap_s",
                  def.horizon_cap_s, "must be finite and > 0"))) {
     return f;
@@ -178,8 +182,9 @@ Failure validate(const fragsim_step_input& in) {
                  "must be a time or INFINITY")) ||
       (f = check(positive(in.dt_s), "dt_s", in.dt_s, "must be finite and > 0")) ||
       (f = check_vec(in.gravity_mps2, "gravity_mps2", finite, "must be finite")) ||
-      (f = check(finite(in.ground_height_m), "ground_height_m", in.ground_height_m,
-                 "must be finite")) ||
+      (f = check(finite(in.ground_height_m) ||
+                     in.ground_height_m == -std::numeric_limits<double>::infinity(),
+                 "ground_height_m", in.ground_height_m, "must be finite, or -INFINITY for none")) ||
       (f = check_vec(c.eye_m, "camera.eye_m", finite, "must be finite")) ||
       (f = validate_frame(c)) ||
       (f = check_vec(c.velocity_mps, "camera.velocity_mps", finite, "must be finite")) ||
@@ -279,6 +284,7 @@ struct fragsim_controller {
   fragsim_controller_def def{};
   std::unique_ptr<fragsim::Strategy> strategy;
   fragsim::EdgeStrategy* edge = nullptr;  // the same object, when it keeps per-fragment state
+  fragsim::EdgeMinStrategy* edge_min = nullptr;  // likewise (its budget's last forces)
   std::string error;
 
   // Work space kept between calls so a step does not allocate once it has seen its largest
@@ -299,7 +305,11 @@ struct fragsim_controller {
         p.camera_model = static_cast<fragsim::CameraModel>(raw(d.edge_min.camera_model));
         p.camera_accel_mps2 = d.edge_min.camera_accel_mps2;
         p.camera_turn_degps = d.edge_min.camera_turn_degps;
-        strategy = std::make_unique<fragsim::EdgeMinStrategy>(p);
+        p.horizon_cap_s = d.horizon_cap_s;
+        p.max_solves = d.edge_min.max_solves;
+        auto e = std::make_unique<fragsim::EdgeMinStrategy>(p);
+        edge_min = e.get();
+        strategy = std::move(e);
         break;
       }
       case FRAGSIM_STRATEGY_EDGE: {
@@ -310,6 +320,7 @@ struct fragsim_controller {
         p.reach = static_cast<fragsim::Reach>(raw(d.edge.reach));
         p.horizon = static_cast<fragsim::Horizon>(raw(d.edge.horizon));
         p.replan = static_cast<fragsim::Replan>(raw(d.edge.replan));
+        p.horizon_cap_s = d.horizon_cap_s;
         auto e = std::make_unique<fragsim::EdgeStrategy>(p);
         edge = e.get();
         strategy = std::move(e);
@@ -420,13 +431,9 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
   ctx.step = 0;
   ctx.t_s = in.time_s;
   ctx.dt_s = in.dt_s;
-  // A game has no scene end: the look-ahead is the def's cap, or the caller's end when sooner.
-  ctx.duration_s = std::min(in.end_time_s, in.time_s + def.horizon_cap_s);
-  if (!std::isfinite(ctx.duration_s)) {
-    return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
-                       "time_s = %g: too large to add horizon_cap_s = %g to", in.time_s,
-                       def.horizon_cap_s));
-  }
+  // A game has no scene end: the look-ahead comes from the physics, capped by the def's
+  // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
+  ctx.end_time_s = in.end_time_s;
   const fragsim_camera& c = in.camera;
   ctx.camera.eye_m = vec(c.eye_m);
   ctx.camera.right = vec(c.right);
@@ -446,6 +453,7 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
   ctx.fragments = std::span<const fragsim::FragmentState>(states.data(), n);
 
   if (!same_ids && edge != nullptr) edge->carry_over(previous);
+  if (!same_ids && edge_min != nullptr) edge_min->carry_over(previous);
   out.clear();
   strategy->step(ctx, out);
 
@@ -474,6 +482,7 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
     stats->guarded = out.guarded;
     stats->new_ids = new_ids;
     stats->dropped_ids = dropped_ids;
+    stats->deferred = out.deferred;
   }
   error.clear();
   return FRAGSIM_OK;
@@ -535,7 +544,8 @@ FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void) {
   d.edge.replan = static_cast<fragsim_edge_replan>(e.replan);
   d.deflect_all.accel_mps2 = da.accel_mps2;
   d.deflect_all.range_m = da.range_m;
-  d.horizon_cap_s = 3.0;
+  d.edge_min.max_solves = em.max_solves;
+  d.horizon_cap_s = em.horizon_cap_s;  // edge's default is the same
   d.internal_value = kDefCookie;
   return d;
 }

@@ -28,12 +28,13 @@ ControlDump::ControlDump(const std::string& path, std::string_view strategy, con
   std::uint32_t id = 0;
   if (strategy == "edge-min") {
     const EdgeMinParams& p = scene.edge_min;
-    param = {p.margin_m, p.a_max_mps2, p.camera_accel_mps2, p.camera_turn_degps};
+    param = {p.margin_m, p.a_max_mps2, p.camera_accel_mps2, p.camera_turn_degps, p.horizon_cap_s};
     iparam[0] = static_cast<std::int32_t>(p.camera_model);
+    iparam[1] = p.max_solves;
   } else if (strategy == "edge") {
     id = 1;
     const EdgeParams& p = scene.edge;
-    param = {p.k, p.a_max_mps2};
+    param = {p.k, p.a_max_mps2, p.horizon_cap_s};
     iparam = {static_cast<std::int32_t>(p.predictor), static_cast<std::int32_t>(p.reach),
               static_cast<std::int32_t>(p.horizon), static_cast<std::int32_t>(p.replan)};
   } else {
@@ -64,7 +65,7 @@ void ControlDump::record(const StepContext& ctx, const StepOutput& out) {
   };
   put(ctx.t_s);
   put(ctx.dt_s);
-  put(ctx.duration_s);
+  put(ctx.end_time_s);
   put3(c.eye_m);
   put3(c.right);
   put3(c.up);

@@ -9,7 +9,8 @@
 //           (0 edge-min, 1 edge, 2 deflect-all); uint32 step_count; uint32 reserved = 0;
 //           double param[8]; int32 iparam[8]   (what each holds: ControlDump::params)
 //   step    int32 step; int32 fragment_count; int32 force_count; int32 reserved = 0;
-//           double context[32] = t, dt, duration, eye[3], right[3], up[3], forward[3], fovy_deg,
+//           double context[32] = t, dt, end_time (+inf in the tool), eye[3], right[3], up[3],
+//           forward[3], fovy_deg,
 //             aspect, near, far, camera_velocity[3], V_c, max_accel, max_turn_radps,
 //             body_half[3], gravity[3], ground_height;
 //           fragment_count x double[8] = position[3], velocity[3], radius, mass;

@@ -65,6 +65,8 @@ const std::vector<Column>& summary_columns() {
       {"wall_contacts", &RunSummary::wall_contacts},
       {"min_near_m", &RunSummary::min_near_m},
       {"depth_step_m", &RunSummary::depth_step_m},
+      // Last, so the columns before it keep their places.
+      {"deferred", &RunSummary::deferred},
   };
   return cols;
 }

@@ -48,6 +48,7 @@ struct RunSummary {
   int capped_forces = 0;        // force-steps reduced by the acceleration cap
   int unsaved_by_cap = 0;       // capped fragments that still met the near rectangle or camera
   int guarded = 0;              // singular spots guarded (t_C - t -> 0, |P_pc| -> 0)
+  int deferred = 0;             // fragment-steps a per-step budget left unsolved (edge-min)
   int forced_fragments = 0;     // fragments that got any force
   double impulse_Ns = 0.0;      // sum of |F| dt over the run
   double max_accel_mps2 = 0.0;  // largest imposed acceleration

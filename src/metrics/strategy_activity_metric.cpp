@@ -13,7 +13,7 @@ void StrategyActivityMetric::begin(const RunInfo& info, const StepSnapshot&) {
   near_m_.clear();
   forced_.assign(static_cast<std::size_t>(info.fragment_count), 0);
   capped_fragment_.assign(static_cast<std::size_t>(info.fragment_count), 0);
-  capped_ = guarded_ = wall_contacts_ = 0;
+  capped_ = guarded_ = deferred_ = wall_contacts_ = 0;
   impulse_Ns_ = max_accel_mps2_ = 0.0;
 }
 
@@ -23,6 +23,7 @@ void StrategyActivityMetric::observe(const StepSnapshot& snap) {
   capped_ += static_cast<int>(snap.capped.size());
   for (int i : snap.capped) capped_fragment_[static_cast<std::size_t>(i)] = 1;
   guarded_ += snap.guarded;
+  deferred_ += snap.deferred;
   wall_contacts_ += snap.wall_contacts;
   for (const AppliedForce& f : snap.forces) {
     const double force_N = f.force_N.norm();
@@ -40,6 +41,7 @@ void StrategyActivityMetric::fill(RunSummary& s) const {
   s.candidate_steps = std::accumulate(candidates_.begin(), candidates_.end(), 0);
   s.capped_forces = capped_;
   s.guarded = guarded_;
+  s.deferred = deferred_;
   s.forced_fragments = static_cast<int>(std::count(forced_.begin(), forced_.end(), 1));
   s.impulse_Ns = impulse_Ns_;
   s.max_accel_mps2 = max_accel_mps2_;

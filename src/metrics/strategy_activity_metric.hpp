@@ -35,6 +35,7 @@ class StrategyActivityMetric final : public RunObserver {
   std::vector<char> capped_fragment_;
   int capped_ = 0;
   int guarded_ = 0;
+  int deferred_ = 0;
   int wall_contacts_ = 0;
   double impulse_Ns_ = 0.0;
   double max_accel_mps2_ = 0.0;

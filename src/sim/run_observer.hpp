@@ -26,6 +26,7 @@ struct StepSnapshot {
   std::span<const int> candidates;
   std::span<const int> capped;  // fragments whose force the cap reduced
   int guarded = 0;
+  int deferred = 0;  // fragments a per-step budget left unsolved
   // What the physics saw in that step.
   std::span<const int> camera_hits;  // fragments that touched the camera's sensor volume
   int wall_contacts = 0;

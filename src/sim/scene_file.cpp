@@ -502,6 +502,11 @@ const std::vector<KeySpec>& keys() {
     t.push_back(choice<Replan>(
         "edge.replan", "never | contact | always; which non-candidates are re-examined",
         [](Scene& s) -> Replan& { return s.edge.replan; }, replans));
+    t.push_back(real(
+        "edge.horizon_cap_s",
+        "s; t_G's fallback and cap: a path that never falls through the horizon height is "
+        "examined this far ahead (a game has no scene end)",
+        [](Scene& s) -> double& { return s.edge.horizon_cap_s; }, open_closed(0, 3600)));
     // [edge-min]
     t.push_back(real(
         "edge-min.margin_m", "m; clearance kept beyond the protected rectangle's edge",
@@ -528,6 +533,16 @@ const std::vector<KeySpec>& keys() {
         "degrees/s; bounded_accel and reachable: the camera's turn-rate bound assumed when the "
         "scene declares none",
         [](Scene& s) -> double& { return s.edge_min.camera_turn_degps; }, closed(0, 1e6)));
+    t.push_back(real(
+        "edge-min.horizon_cap_s",
+        "s; look-ahead cap: a path is examined until the fragment reaches the ground, at most "
+        "this far ahead",
+        [](Scene& s) -> double& { return s.edge_min.horizon_cap_s; }, open_closed(0, 3600)));
+    t.push_back(integer(
+        "edge-min.max_solves",
+        "fragments solved exactly per step, the most urgent first; the rest keep their last "
+        "force (0: no cap)",
+        [](Scene& s) -> int& { return s.edge_min.max_solves; }, 0, 100000000));
     // [metrics]
     t.push_back(integer(
         "metrics.grid_width_px", "pixels across the occlusion raster (height from camera.aspect)",

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "sim/camera_motion.hpp"
 #include "sim/explosion.hpp"
@@ -58,7 +59,8 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     ctx.step = k;
     ctx.t_s = t;
     ctx.dt_s = dt;
-    ctx.duration_s = scene.sim.duration_s;
+    // No end_time_s: the scene's duration is where fragsim stops measuring, which a strategy in a
+    // game could not know (ctx.end_time_s stays +infinity).
     ctx.camera = path.pose_at(t);
     ctx.camera_velocity_mps = path.velocity_at(t);
     ctx.camera_max_speed_mps = limits.max_speed_mps;
@@ -66,7 +68,8 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     ctx.camera_max_turn_radps = limits.max_turn_radps;
     ctx.camera_body_half_m = body_half;
     ctx.gravity_mps2 = scene.sim.gravity_mps2;
-    ctx.ground_height_m = scene.ground.height_m;
+    ctx.ground_height_m =
+        scene.ground.enabled ? scene.ground.height_m : -std::numeric_limits<double>::infinity();
     ctx.fragments = states;
 
     out.clear();
@@ -112,6 +115,7 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     snap.candidates = out.candidates;
     snap.capped = out.capped;
     snap.guarded = out.guarded;
+    snap.deferred = out.deferred;
     snap.camera_hits = world.camera_hits();
     snap.wall_contacts = world.wall_contacts();
     snap.physics_s = physics_s;

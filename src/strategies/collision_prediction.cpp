@@ -16,6 +16,7 @@ BallisticPath predicted_path(const FragmentState& f, const Eigen::Vector3d& g_mp
 }
 
 double time_to_horizon(const BallisticPath& path, double y_ref_m, double fallback_s) {
+  if (!std::isfinite(y_ref_m)) return fallback_s;  // horizon = ground without a ground
   // y(tau) - y_ref = a tau^2 + b tau + c with a = g_y / 2.
   const double a = 0.5 * path.g_mps2.y();
   const double b = path.v0_mps.y();
@@ -106,7 +107,7 @@ ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d
 }
 
 double ContactQuery::t_horizon_s(const BallisticPath& p) const {
-  // Nothing after the scene's end can hit the camera: t_G never reaches past it.
+  // t_G never reaches past the cap (edge's horizon_cap_s, or the shot's end).
   return std::min(time_to_horizon(p, y_ref_m, remaining_s), remaining_s);
 }
 
@@ -179,6 +180,9 @@ std::span<const ContactPrediction> ContactPredictor::predict(
                                                    lanes::load(&py_[j]) - y_ref, query.remaining_s);
     lanes::store(&t_horizon_[j], th);
   }
+  // As time_to_horizon: without a ground to fall to (y_ref = -inf), t_G is the fallback.
+  if (!std::isfinite(query.y_ref_m))
+    std::fill(t_horizon_.begin(), t_horizon_.end(), query.remaining_s);
   const bool thesis = query.reach == Reach::kThesis;
   for (std::size_t j = 0; j < n; ++j) {
     const double th = t_horizon_[j];

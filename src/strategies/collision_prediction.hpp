@@ -61,14 +61,14 @@ ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d
                                 const ReachModel& model, double t_horizon_s);
 
 // What `edge` asks of each fragment it examines: the path its predictor believes in, t_G (never
-// past the scene's end) and the contact with the ball the camera can reach.
+// past the look-ahead's cap) and the contact with the ball the camera can reach.
 struct ContactQuery {
   Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
   Predictor predictor = Predictor::kThesis;
   double dt_s = 0.0;
   double y_ref_m = 0.0;      // the height whose downward crossing is t_G
-  double remaining_s = 0.0;  // scene time left: t_G's fallback and cap
+  double remaining_s = 0.0;  // look-ahead left: t_G's fallback and cap
   Reach reach = Reach::kThesis;
   double max_speed_mps = 0.0;  // V_c
   double body_radius_m = 0.0;  // the camera body's; each fragment adds its own

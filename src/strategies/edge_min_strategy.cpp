@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "strategies/first_root.hpp"
 #include "strategies/force_cap.hpp"
@@ -283,6 +285,49 @@ std::size_t smallest(const std::array<double, 4>& need) {
 
 }  // namespace
 
+double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half_gy_mps2,
+                                         double ground_m) {
+  if (!(ground_m > -kInf)) return kInf;  // no ground
+  // y(t) - ground = a t^2 + b t + c.
+  const double a = half_gy_mps2;
+  const double b = vy_mps;
+  const double c = y0_m - ground_m;
+  if (a != 0.0) {
+    const double disc = b * b - 4.0 * a * c;
+    if (disc >= 0.0) {
+      // Stable roots (as time_to_horizon): q = -(b + sign(b) sqrt(disc)) / 2, q / a and c / q.
+      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+      const double r1 = q / a;
+      const double r2 = q != 0.0 ? c / q : r1;
+      const double later = std::max(r1, r2);
+      if (later > 0.0 && b + 2.0 * a * later < 0.0) return later;
+    }
+  } else if (b < 0.0 && c > 0.0) {
+    return -c / b;
+  }
+  // No downward crossing ahead. Above the ground: it never comes down. At or below it (resting,
+  // or sunk into it by the contact's softness): the path rises for good (gravity off or up) or
+  // stays underground, where nothing it predicts is real.
+  if (c > 0.0) return kInf;
+  return (a > 0.0 || (a == 0.0 && b > 0.0)) ? kInf : 0.0;
+}
+
+void EdgeMinStrategy::reset(int fragment_count) {
+  last_force_N_.assign(static_cast<std::size_t>(std::max(fragment_count, 0)),
+                       Eigen::Vector3d::Zero());
+}
+
+void EdgeMinStrategy::carry_over(std::span<const int> previous) {
+  std::vector<Eigen::Vector3d> next(previous.size(), Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < previous.size(); ++i) {
+    const int j = previous[i];
+    if (j >= 0 && static_cast<std::size_t>(j) < last_force_N_.size()) {
+      next[i] = last_force_N_[static_cast<std::size_t>(j)];
+    }
+  }
+  last_force_N_.swap(next);
+}
+
 double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
   const double declared = ctx.camera_max_accel_mps2;
   return declared > 0.0 ? declared : params_.camera_accel_mps2;  // NaN: not declared either
@@ -300,7 +345,10 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double half_h_m = std::max(cam.near_half_height_m(), body.y()) + params_.margin_m;
   const double front_m = std::max(cam.near_m, body.z()) + params_.margin_m;
   const double back_m = body.z() + params_.margin_m;
-  const double horizon_s = std::max(ctx.duration_s - ctx.t_s, ctx.dt_s);
+  // The look-ahead: each fragment's own, until it reaches the ground (below), within the cap and
+  // the shot's end when known. The rejection and the robust models' window use the largest.
+  const double cap_s = std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s);
+  const double horizon_s = std::max(cap_s, ctx.dt_s);
   const Eigen::Vector3d half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
   const Eigen::Vector3d lo_m(-half_w_m, -half_h_m, -back_m);
   const Eigen::Vector3d hi_m(half_w_m, half_h_m, front_m);
@@ -348,24 +396,71 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         grown_clearance_.run(ctx.fragments, grown_frame, half_g, lo_m - grow, hi_m + grow, look_s);
   }
 
+  // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
+  // back (the camera's forward axis tilted toward the ground can).
+  const auto receding = [&](const Eigen::Vector3d& d, const Eigen::Vector3d& w, double r) {
+    return d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
+  };
+  const auto needs_solve = [&](std::size_t i) {
+    if (robust && !grown_clears[i]) return true;
+    if (clears[i]) return false;
+    const FragmentState& f = ctx.fragments[i];
+    return !receding(cam.to_camera(f.position_m),
+                     cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps), f.radius_m);
+  };
+
+  // The per-step budget: over max_solves fragments left to solve, the most urgent are solved and
+  // the rest deferred to a later step, keeping the force they were last given (a constant push is
+  // a plan until arrival: dropping it half way loses what it already did, and the urgent ones,
+  // which a stale push could fail, are the ones solved). Without a budget nothing here runs.
+  const bool budget = params_.max_solves > 0;
+  const std::size_t n = ctx.fragments.size();
+  if (budget) {
+    if (last_force_N_.size() != n) last_force_N_.assign(n, Eigen::Vector3d::Zero());
+    deferred_.assign(n, 0);
+    queue_.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!needs_solve(i)) continue;
+      // Time to arrival: distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w;
+      // a fragment not closing in is last (+inf).
+      const FragmentState& f = ctx.fragments[i];
+      const Eigen::Vector3d d = f.position_m - cam.eye_m;
+      const double closing = -d.dot(f.velocity_mps - ctx.camera_velocity_mps);
+      const double arrival_s = closing > 0.0 ? d.squaredNorm() / closing : kInf;
+      queue_.push_back({arrival_s, static_cast<int>(i)});
+    }
+    const auto cap = static_cast<std::size_t>(params_.max_solves);
+    if (queue_.size() > cap) {
+      // (arrival, index) is a total order: the same set is solved whatever the sort does.
+      std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
+                       queue_.end());
+      for (std::size_t k = cap; k < queue_.size(); ++k) {
+        deferred_[static_cast<std::size_t>(queue_[k].second)] = 1;
+      }
+      out.deferred = static_cast<int>(queue_.size() - cap);
+    }
+  }
+
   const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-  for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
-    const bool grown_clear = !robust || grown_clears[i];
-    if (clears[i] && grown_clear) continue;
+  // The exact solve of one fragment the rejections left in doubt: its force, if any, goes to out.
+  const auto solve = [&](std::size_t i, bool grown_clear) {
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
     const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
     const double r = f.radius_m;
+    // This fragment's look-ahead: until its path reaches the ground.
+    const double ground_s = time_to_ground_s(f.position_m.y(), f.velocity_mps.y(),
+                                             0.5 * ctx.gravity_mps2.y(), ctx.ground_height_m + r);
+    const double own_horizon_s = std::max(std::min(ground_s, cap_s), ctx.dt_s);
     const Slabs slabs{{-half_w_m - r, -half_h_m - r, -back_m - r},
                       {half_w_m + r, half_h_m + r, front_m + r}};
     const Coord x{d.x(), w.x(), half_g.x()};
     const Coord y{d.y(), w.y(), half_g.y()};
     const Coord z{d.z(), w.z(), half_g.z()};
     Nominal nominal;
-    // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
-    // back (the camera's forward axis tilted toward the ground can).
-    const bool receding = d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
-    if (!clears[i] && !receding) nominal = nominal_push(x, y, z, slabs, horizon_s, ctx.dt_s);
+    if (!clears[i] && !receding(d, w, r)) {
+      nominal = nominal_push(x, y, z, slabs, own_horizon_s, ctx.dt_s);
+    }
     const std::size_t best = smallest(nominal.need);
     // Already inside the box's shadow on every side: nothing finite helps; push toward the
     // nearest way out at the cap and let the report count it if it still hits.
@@ -373,12 +468,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                              : std::isfinite(nominal.need[best]) ? nominal.need[best]
                                                                  : 2.0 * params_.a_max_mps2 + 1.0;
     if (!robust) {
-      if (!nominal.threat) continue;
+      if (!nominal.threat) return;
       out.candidates.push_back(static_cast<int>(i));
-      if (a_nominal <= 0.0) continue;
+      if (a_nominal <= 0.0) return;
       apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                    params_.a_max_mps2);
-      continue;
+      return;
     }
 
     // The worst case over the look-ahead window.
@@ -393,8 +488,10 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                               ball_rho};
     }
     const std::span<Constraint> cons(cons_store.data(), n_cons);
-    const WorstCase wc = grown_clear ? WorstCase{} : worst_case(cons, slabs, look_s, ctx.dt_s, 0.0);
-    if (!nominal.threat && !wc.threat) continue;
+    const double own_look_s = std::min(look_s, own_horizon_s);
+    const WorstCase wc =
+        grown_clear ? WorstCase{} : worst_case(cons, slabs, own_look_s, ctx.dt_s, 0.0);
+    if (!nominal.threat && !wc.threat) return;
     out.candidates.push_back(static_cast<int>(i));
     if (wc.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
@@ -406,7 +503,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         const double dv = sign * std::min(a_nominal, params_.a_max_mps2) * ctx.dt_s;
         for (Constraint& con : cons) con.axis[k].c1 += dv;
       }
-      const WorstCase wait = worst_case(cons, slabs, look_s, ctx.dt_s, ctx.dt_s);
+      const WorstCase wait = worst_case(cons, slabs, own_look_s, ctx.dt_s, ctx.dt_s);
       const double a_wait = wait.threat ? wait.need[smallest(wait.need)] : 0.0;
       if (!(a_wait <= params_.a_max_mps2)) {
         const std::size_t wc_best = smallest(wc.need);
@@ -414,12 +511,28 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
             std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
         apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
                      f.mass_kg, params_.a_max_mps2);
-        continue;
+        return;
       }
     }
-    if (a_nominal <= 0.0) continue;
+    if (a_nominal <= 0.0) return;
     apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                  params_.a_max_mps2);
+  };
+
+  for (std::size_t i = 0; i < n; ++i) {
+    if (budget && deferred_[i]) {
+      if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});
+      continue;
+    }
+    const bool grown_clear = !robust || grown_clears[i];
+    const bool cleared = clears[i] && grown_clear;
+    const std::size_t forces_before = out.forces.size();
+    if (!cleared) solve(i, grown_clear);
+    // What this step gave fragment i, for a later step that defers it.
+    if (budget) {
+      last_force_N_[i] =
+          out.forces.size() > forces_before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
+    }
   }
 }
 

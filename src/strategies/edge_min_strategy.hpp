@@ -31,6 +31,10 @@
 // (a player with instant turns) leaves bounded_accel only the ball V_c t, which is reachable's
 // region: it still holds, since reachable does not depend on A at all.
 
+#include <span>
+#include <utility>
+#include <vector>
+
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/strategy.hpp"
 #include "strategies/strategy_params.hpp"
@@ -41,8 +45,16 @@ class EdgeMinStrategy final : public Strategy {
  public:
   explicit EdgeMinStrategy(const EdgeMinParams& params) : params_(params) {}
   std::string name() const override { return "edge-min"; }
-  void reset(int) override {}
+  void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
+  // The library's fragments come and go by id: previous[i] is where fragment i was at the last
+  // call (-1: new), so a deferred fragment keeps its own last force (max_solves only).
+  void carry_over(std::span<const int> previous);
+
+  // The time until the path y(t) = y0 + vy t + half_gy t^2 comes down through ground_m: the later
+  // root, going down; +inf if it never does (gravity off, or ground_m = -inf: no ground), 0 if it
+  // is at or below ground_m now and stays there (resting on the ground).
+  static double time_to_ground_s(double y0_m, double vy_mps, double half_gy_mps2, double ground_m);
 
   // How far a constant acceleration of 1 m/s^2, applied from the coming step on, has moved a body
   // after tau_s under ODE's semi-implicit Euler with step dt_s: sum over n = tau/dt steps of
@@ -61,6 +73,11 @@ class EdgeMinStrategy final : public Strategy {
   // grown box of the robust models.
   BoxClearance clearance_;
   BoxClearance grown_clearance_;
+  // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
+  // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
+  std::vector<Eigen::Vector3d> last_force_N_;
+  std::vector<std::pair<double, int>> queue_;
+  std::vector<char> deferred_;
 };
 
 }  // namespace fragsim

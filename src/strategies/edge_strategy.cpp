@@ -50,7 +50,8 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   query.predictor = params_.predictor;
   query.dt_s = ctx.dt_s;
   query.y_ref_m = params_.horizon == Horizon::kCamera ? cam.eye_m.y() : ctx.ground_height_m;
-  query.remaining_s = std::max(ctx.duration_s - ctx.t_s, 0.0);
+  // t_G's fallback and cap: the parameter (a game has no scene end), or the shot's end if sooner.
+  query.remaining_s = std::max(std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s), 0.0);
   query.reach = params_.reach;
   query.max_speed_mps = ctx.camera_max_speed_mps;
   query.body_radius_m = ctx.camera_body_half_m.norm();

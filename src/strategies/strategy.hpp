@@ -4,6 +4,7 @@
 // answer. Parameters are fixed at construction; reset() clears the run state so a rerun is
 // reproducible.
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,7 +20,11 @@ struct StepContext {
   int step = 0;      // index of the step about to be taken
   double t_s = 0.0;  // time at the start of the step; 0 is the explosion
   double dt_s = 0.0;
-  double duration_s = 0.0;
+  // When the shot ends, if the caller knows (a cut-scene): an extra cap on every look-ahead.
+  // +infinity otherwise; the tool passes +infinity too: its scene duration is where measuring
+  // stops, not something a strategy in a game could know. Look-ahead comes from the physics
+  // (time to the ground or to the camera's height) and each strategy's horizon_cap_s.
+  double end_time_s = std::numeric_limits<double>::infinity();
   CameraPose camera;  // as rendered now (scene near distance)
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();  // over the step being taken
   double camera_max_speed_mps = 0.0;                              // V_c
@@ -31,7 +36,7 @@ struct StepContext {
   double camera_max_turn_radps = 0.0;
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
-  double ground_height_m = 0.0;
+  double ground_height_m = -std::numeric_limits<double>::infinity();  // -infinity: no ground
   std::span<const FragmentState> fragments;
 };
 
@@ -41,6 +46,7 @@ struct StepOutput {
   std::optional<double> near_m;      // a near distance other than the scene's (near-plane)
   std::vector<int> capped;           // fragments whose force the acceleration cap reduced
   int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
+  int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
 
   void clear() {
     forces.clear();
@@ -48,6 +54,7 @@ struct StepOutput {
     near_m.reset();
     capped.clear();
     guarded = 0;
+    deferred = 0;
   }
 };
 

@@ -50,6 +50,9 @@ struct EdgeParams {
   Reach reach = Reach::kThesis;
   Horizon horizon = Horizon::kCamera;
   Replan replan = Replan::kNever;
+  // t_G's fallback and cap: a path that never falls through the horizon height is examined this
+  // far ahead (the thesis used the scene's end; a game has none, so this is a setting).
+  double horizon_cap_s = 3.0;
 };
 
 // `edge-min` (METHOD.md section 4): the least constant push that takes a fragment just past the
@@ -69,6 +72,14 @@ struct EdgeMinParams {
   // declares its bounds (camera.mode = player) is taken at its word.
   double camera_accel_mps2 = 20.0;
   double camera_turn_degps = 90.0;
+  // How far ahead a path is examined: until the fragment reaches the ground (its centre at the
+  // ground height plus its radius, going down: the ballistic path means nothing after it
+  // bounces), never beyond this cap (a path that never comes down: gravity off, no ground).
+  double horizon_cap_s = 3.0;
+  // Per-step budget: at most this many fragments that survive the cheap rejection are solved
+  // exactly in one step, the most urgent first (time to arrival, distance over closing speed);
+  // the rest keep the force of the last step they were solved. 0: no cap.
+  int max_solves = 0;
 };
 
 }  // namespace fragsim

@@ -56,9 +56,10 @@ fragsim_fragment fragment(double x, double y, double z, double vx, double vy, do
   return f;
 }
 
-// The StepContext the library builds for `in` (control.h: duration = time + horizon cap).
+// The StepContext the library builds for `in` (the horizon cap goes to the strategy's
+// parameters; the shot's end, if any, is the context's).
 fragsim::StepContext context_for(const fragsim_step_input& in,
-                                 std::vector<fragsim::FragmentState>& states, double cap_s) {
+                                 std::vector<fragsim::FragmentState>& states) {
   states.clear();
   for (int32_t i = 0; i < in.fragment_count; ++i) {
     const fragsim_fragment& f = in.fragments[i];
@@ -74,7 +75,7 @@ fragsim::StepContext context_for(const fragsim_step_input& in,
   fragsim::StepContext ctx;
   ctx.t_s = in.time_s;
   ctx.dt_s = in.dt_s;
-  ctx.duration_s = std::min(in.end_time_s, in.time_s + cap_s);
+  ctx.end_time_s = in.end_time_s;
   ctx.camera.eye_m = v(in.camera.eye_m);
   ctx.camera.right = v(in.camera.right);
   ctx.camera.up = v(in.camera.up);
@@ -245,7 +246,7 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   std::vector<fragsim::FragmentState> states;
   fragsim::EdgeMinStrategy strategy{fragsim::EdgeMinParams{}};
   fragsim::StepOutput out;
-  strategy.step(context_for(in, states, def.horizon_cap_s), out);
+  strategy.step(context_for(in, states), out);
   const std::vector<fragsim_vec3> tool = dense(out, 1);
   EXPECT_EQ(std::memcmp(&tool[0], &forces[0], sizeof(fragsim_vec3)), 0);
 }
@@ -284,7 +285,7 @@ TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
       std::vector<fragsim_vec3> forces(frags.size());
       ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
       fragsim::StepOutput out;
-      tool->step(context_for(in, states, def.horizon_cap_s), out);
+      tool->step(context_for(in, states), out);
       const std::vector<fragsim_vec3> expected = dense(out, frags.size());
       EXPECT_EQ(std::memcmp(expected.data(), forces.data(), forces.size() * sizeof forces[0]), 0)
           << "strategy " << which << " step " << step;

@@ -124,6 +124,8 @@ int main(int argc, char** argv) {
     def.edge_min.camera_accel_mps2 = param[2];
     def.edge_min.camera_turn_degps = param[3];
     def.edge_min.camera_model = (fragsim_camera_model)iparam[0];
+    def.horizon_cap_s = param[4];
+    def.edge_min.max_solves = iparam[1];
   } else if (strategy == 1) {
     def.strategy = FRAGSIM_STRATEGY_EDGE;
     def.edge.k_Nms2 = param[0];
@@ -132,6 +134,7 @@ int main(int argc, char** argv) {
     def.edge.reach = (fragsim_edge_reach)iparam[1];
     def.edge.horizon = (fragsim_edge_horizon)iparam[2];
     def.edge.replan = (fragsim_edge_replan)iparam[3];
+    def.horizon_cap_s = param[2];
   } else if (strategy == 2) {
     def.strategy = FRAGSIM_STRATEGY_DEFLECT_ALL;
     def.deflect_all.accel_mps2 = param[0];
@@ -140,9 +143,8 @@ int main(int argc, char** argv) {
     fprintf(stderr, "replay: unknown strategy %u\n", (unsigned)strategy);
     return 2;
   }
-  /* The tool's scene has an end: it is handed over as end_time_s, and a cap far beyond it makes
-   * the library's look-ahead exactly the tool's (duration - t). */
-  def.horizon_cap_s = 1e9;
+  /* The tool's look-ahead is the strategy's horizon_cap_s (above) and the physics; its steps
+   * carry end_time_s = INFINITY, handed over as they are. */
   if (fragsim_controller_create(&def, &ctl, message, sizeof message) != FRAGSIM_OK) {
     fprintf(stderr, "replay: create: %s\n", message);
     return 2;
