@@ -26,13 +26,17 @@ build_example() {  # name, extra cmake arguments...
 
 build_example minimal_c
 "$work/minimal_c/minimal_c"
-ldd "$work/minimal_c/minimal_c" | grep -q "$prefix/lib/libfragsim_control.so" ||
+# ldd's output is taken whole first: `ldd | grep -q` under pipefail fails at random when grep
+# exits at its match and ldd, still writing, dies of SIGPIPE.
+libs=$(ldd "$work/minimal_c/minimal_c")
+grep -q "$prefix/lib/libfragsim_control.so" <<<"$libs" ||
   { echo "examples_test: minimal_c does not use the installed shared library" >&2; exit 1; }
 
 build_example minimal_c -Dfragsim_control_USE_STATIC=ON
 # A C program linking the static C++ archive: CMake must bring the C++ runtime along.
 "$work/minimal_c-Dfragsim_control_USE_STATIC=ON/minimal_c" >/dev/null
-! ldd "$work/minimal_c-Dfragsim_control_USE_STATIC=ON/minimal_c" | grep -q libfragsim_control ||
+libs=$(ldd "$work/minimal_c-Dfragsim_control_USE_STATIC=ON/minimal_c")
+! grep -q libfragsim_control <<<"$libs" ||
   { echo "examples_test: the static build still needs the shared library" >&2; exit 1; }
 
 # pkg-config, shared and static.
