@@ -488,6 +488,31 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
   return FRAGSIM_OK;
 }
 
+namespace {
+
+// The step behind both entry points: nothing escapes the C boundary, and a failed step leaves
+// zero forces.
+template <typename Source, typename Sink>
+fragsim_status guarded_step(fragsim_controller& controller, const fragsim_step_input& input,
+                            const Source& source, std::size_t n, const Sink& sink,
+                            fragsim_step_stats* stats) {
+  try {
+    const fragsim_status s = controller.step(input, source, n, sink, stats);
+    if (s != FRAGSIM_OK) sink.zero(n);
+    return s;
+  } catch (const std::bad_alloc&) {
+    sink.zero(n);
+    controller.error = "out of memory";
+    return FRAGSIM_ERROR_OUT_OF_MEMORY;
+  } catch (...) {
+    sink.zero(n);
+    controller.error = "internal: unexpected exception";
+    return FRAGSIM_ERROR_INTERNAL;
+  }
+}
+
+}  // namespace
+
 extern "C" {
 
 FRAGSIM_API int32_t fragsim_version(void) {
@@ -629,20 +654,7 @@ FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller* controlle
   if (n > 0 && forces_N == nullptr) {
     return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "forces_N: NULL with fragment_count > 0");
   }
-  try {
-    const fragsim_status s =
-        controller->step(*input, StructSource{input->fragments}, n, sink, stats);
-    if (s != FRAGSIM_OK) sink.zero(n);
-    return s;
-  } catch (const std::bad_alloc&) {
-    sink.zero(n);
-    controller->error = "out of memory";
-    return FRAGSIM_ERROR_OUT_OF_MEMORY;
-  } catch (...) {
-    sink.zero(n);
-    controller->error = "internal: unexpected exception";
-    return FRAGSIM_ERROR_INTERNAL;
-  }
+  return guarded_step(*controller, *input, StructSource{input->fragments}, n, sink, stats);
 }
 
 FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller* controller,
@@ -681,19 +693,7 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller* co
       return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "arrays.force_N: NULL with count > 0");
     }
   }
-  try {
-    const fragsim_status s = controller->step(*input, ArraySource{arrays}, n, sink, stats);
-    if (s != FRAGSIM_OK) sink.zero(n);
-    return s;
-  } catch (const std::bad_alloc&) {
-    sink.zero(n);
-    controller->error = "out of memory";
-    return FRAGSIM_ERROR_OUT_OF_MEMORY;
-  } catch (...) {
-    sink.zero(n);
-    controller->error = "internal: unexpected exception";
-    return FRAGSIM_ERROR_INTERNAL;
-  }
+  return guarded_step(*controller, *input, ArraySource{arrays}, n, sink, stats);
 }
 
 FRAGSIM_API const char* fragsim_controller_last_error(const fragsim_controller* controller) {
