@@ -87,6 +87,20 @@ Setup make_setup(int count, bool resting) {
   in.fragment_count = static_cast<int32_t>(s.fragments.size());
   return s;
 }
+// The tool's fragment states for the setup's fragments (the C API makes the same copy).
+std::vector<fragsim::FragmentState> states_of(const Setup& s) {
+  std::vector<fragsim::FragmentState> states;
+  for (const fragsim_fragment& f : s.fragments) {
+    fragsim::FragmentState st;
+    st.position_m = {f.position_m.x, f.position_m.y, f.position_m.z};
+    st.velocity_mps = {f.velocity_mps.x, f.velocity_mps.y, f.velocity_mps.z};
+    st.radius_m = f.radius_m;
+    st.mass_kg = f.mass_kg;
+    st.touched = f.touched != 0;
+    states.push_back(st);
+  }
+  return states;
+}
 
 // The share of fragments edge-min's first test settles (edge_min_strategy.cpp's box, default
 // parameters, the def's 3 s look-ahead).
@@ -100,14 +114,7 @@ double edge_min_rejected_share(const Setup& s, double horizon_s) {
   const double front = std::max(cam.near_m, body.z()) + p.margin_m;
   const double back = body.z() + p.margin_m;
   const Eigen::Vector3d g(s.input.gravity_mps2.x, s.input.gravity_mps2.y, s.input.gravity_mps2.z);
-  std::vector<fragsim::FragmentState> states;
-  for (const fragsim_fragment& f : s.fragments) {
-    fragsim::FragmentState st;
-    st.position_m = {f.position_m.x, f.position_m.y, f.position_m.z};
-    st.velocity_mps = {f.velocity_mps.x, f.velocity_mps.y, f.velocity_mps.z};
-    st.radius_m = f.radius_m;
-    states.push_back(st);
-  }
+  const std::vector<fragsim::FragmentState> states = states_of(s);
   fragsim::BoxClearance clearance;
   const fragsim::BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, s.camera_velocity_mps};
   const auto clears = clearance.run(states, frame, 0.5 * cam.dir_to_camera(g),
@@ -155,16 +162,7 @@ void BM_ControlStep(benchmark::State& state, fragsim_strategy strategy, bool res
 // fragment states, id check, force scatter): what the boundary costs.
 void BM_ControlEdgeMinDirect(benchmark::State& state, bool resting) {
   const Setup s = make_setup(static_cast<int>(state.range(0)), resting);
-  std::vector<fragsim::FragmentState> states;
-  for (const fragsim_fragment& f : s.fragments) {
-    fragsim::FragmentState st;
-    st.position_m = {f.position_m.x, f.position_m.y, f.position_m.z};
-    st.velocity_mps = {f.velocity_mps.x, f.velocity_mps.y, f.velocity_mps.z};
-    st.radius_m = f.radius_m;
-    st.mass_kg = f.mass_kg;
-    st.touched = f.touched != 0;
-    states.push_back(st);
-  }
+  std::vector<fragsim::FragmentState> states = states_of(s);
   fragsim::StepContext ctx;
   ctx.t_s = s.input.time_s;
   ctx.dt_s = s.input.dt_s;
