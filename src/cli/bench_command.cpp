@@ -8,8 +8,8 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
-#include "metrics/atomic_file.hpp"
-#include "metrics/time_vs_error.hpp"
+#include "experiments/time_vs_error.hpp"
+#include "io/atomic_file.hpp"
 #include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {

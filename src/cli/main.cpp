@@ -14,12 +14,12 @@
 #include "cli/report_table.hpp"
 #include "cli/suite_command.hpp"
 #include "cli/sweep_command.hpp"
-#include "metrics/atomic_file.hpp"
-#include "metrics/control_dump.hpp"
-#include "metrics/csv_export.hpp"
-#include "metrics/evaluation.hpp"
-#include "metrics/process_runner.hpp"
+#include "experiments/control_dump.hpp"
+#include "experiments/evaluation.hpp"
+#include "experiments/process_runner.hpp"
+#include "io/atomic_file.hpp"
 #include "metrics/trajectory_writer.hpp"
+#include "report/csv_export.hpp"
 #include "report/html_report.hpp"
 #include "sim/scene_strategies.hpp"
 
@@ -175,7 +175,7 @@ int cmd_run(const std::vector<std::string>& args) {
   own.add_options()("dump-control", po::value<std::string>()->value_name("FILE"),
                     "only run the strategy (edge-min, edge or deflect-all) and write, per step, "
                     "the inputs it got and the forces applied to FILE (binary, "
-                    "src/metrics/control_dump.hpp), for the controller library's replay test");
+                    "src/experiments/control_dump.hpp), for the controller library's replay test");
   const cli::ParsedCommand p = cli::parse_command("run", args, own);
   if (p.help_shown) return 0;
   const std::string strategy = p.options["strategy"].as<std::string>();

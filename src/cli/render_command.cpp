@@ -8,10 +8,10 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "metrics/csv_export.hpp"
-#include "metrics/evaluation.hpp"
+#include "experiments/evaluation.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
+#include "report/csv_export.hpp"
 #include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {

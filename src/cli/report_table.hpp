@@ -5,7 +5,7 @@
 #include <ostream>
 #include <vector>
 
-#include "metrics/evaluation.hpp"
+#include "experiments/evaluation.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim::cli {

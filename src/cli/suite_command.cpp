@@ -10,9 +10,9 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
-#include "metrics/atomic_file.hpp"
-#include "metrics/process_runner.hpp"
-#include "metrics/suite.hpp"
+#include "experiments/process_runner.hpp"
+#include "experiments/suite.hpp"
+#include "io/atomic_file.hpp"
 
 namespace fragsim::cli {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim suite`: the fixed battery of metrics/suite.hpp (many scenes, cameras and seeds), every
-// strategy on every run; one table per camera mode, the recommendation, and a tidy CSV.
+// `fragsim suite`: the fixed battery of experiments/suite.hpp (many scenes, cameras and seeds),
+// every strategy on every run; one table per camera mode, the recommendation, and a tidy CSV.
 
 #include <string>
 #include <vector>

@@ -17,11 +17,11 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
-#include "metrics/atomic_file.hpp"
-#include "metrics/csv_export.hpp"
-#include "metrics/evaluation.hpp"
-#include "metrics/sweep.hpp"
-#include "sim/input_file.hpp"
+#include "experiments/evaluation.hpp"
+#include "experiments/sweep.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
+#include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
 

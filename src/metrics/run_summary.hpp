@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <string>
+#include <variant>
+#include <vector>
 
 namespace fragsim {
 
@@ -67,5 +69,20 @@ struct RunSummary {
   double strategy_ms_p95 = 0.0;
   double wall_s = 0.0;
 };
+
+// summary.csv's columns in order: each one's header and the RunSummary field it holds. The one
+// list behind summary.csv, its reader and the codec that carries a summary between processes.
+struct SummaryField {
+  const char* name;
+  std::variant<int RunSummary::*, double RunSummary::*, std::string RunSummary::*,
+               std::uint64_t RunSummary::*>
+      field;
+};
+const std::vector<SummaryField>& summary_field_table();
+
+// Every summary.csv field of a run as text (the deterministic part of RunSummary: all but the
+// timings), and back: how a run's summary crosses a process boundary exactly.
+std::vector<std::string> summary_fields(const RunSummary& summary);
+void set_summary_fields(RunSummary& summary, const std::vector<std::string>& fields);
 
 }  // namespace fragsim

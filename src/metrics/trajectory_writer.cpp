@@ -1,6 +1,6 @@
 #include "metrics/trajectory_writer.hpp"
 
-#include "sim/number_format.hpp"
+#include "io/number_format.hpp"
 
 namespace fragsim {
 

@@ -10,8 +10,8 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "metrics/atomic_file.hpp"
-#include "sim/input_file.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_file.hpp"
 
 namespace fragsim {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "metrics/atomic_file.hpp"
+#include "io/atomic_file.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
 #include "report/fixed_text.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "metrics/evaluation.hpp"
+#include "experiments/evaluation.hpp"
 #include "render/frame_recorder.hpp"
 #include "sim/scene.hpp"
 

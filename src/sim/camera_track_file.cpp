@@ -6,8 +6,8 @@
 #include <optional>
 #include <sstream>
 
-#include "sim/input_file.hpp"
-#include "sim/number_format.hpp"
+#include "io/input_file.hpp"
+#include "io/number_format.hpp"
 
 namespace fragsim {
 namespace {

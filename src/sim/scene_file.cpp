@@ -1,7 +1,7 @@
 #include "sim/scene_file.hpp"
 
+#include "io/number_format.hpp"
 #include "sim/camera_track_file.hpp"
-#include "sim/number_format.hpp"
 
 #include <boost/program_options/errors.hpp>
 #include <boost/program_options/value_semantic.hpp>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/input_file.hpp"
+#include "io/input_file.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -1,5 +1,5 @@
 /* The controller library's differential test: replays a dump that `fragsim run --dump-control`
- * wrote (format: src/metrics/control_dump.hpp) through the library's C API, and checks that the
+ * wrote (format: src/experiments/control_dump.hpp) through the library's C API, and checks that the
  * forces are bit for bit the ones fragsim applied. Plain C99: it sees the library only as a game
  * would, through include/fragsim/control.h.
  *

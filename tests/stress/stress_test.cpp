@@ -20,9 +20,9 @@
 #include <utility>
 #include <vector>
 
+#include "experiments/evaluation.hpp"
 #include "health_observer.hpp"
-#include "metrics/evaluation.hpp"
-#include "sim/number_format.hpp"
+#include "io/number_format.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"

@@ -1,0 +1,15 @@
+#pragma once
+// An Evaluation as bytes and back, exactly (doubles bit for bit), so that runs made in worker
+// processes come back to the parent as if they had run there.
+
+#include <string>
+
+#include "experiments/evaluation.hpp"
+
+namespace fragsim {
+
+std::string encode_evaluation(const Evaluation& e);
+// Throws std::runtime_error on truncated or malformed bytes.
+Evaluation decode_evaluation(const std::string& bytes);
+
+}  // namespace fragsim

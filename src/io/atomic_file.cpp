@@ -1,0 +1,99 @@
+#include "io/atomic_file.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+
+namespace fragsim {
+namespace {
+
+// Temporary files a signal handler may have to remove. The handler may only call
+// async-signal-safe functions, so the paths live in fixed storage, claimed and released with
+// atomics (there are a handful of live output files at most).
+constexpr std::size_t kMaxLive = 32;
+constexpr std::size_t kMaxPath = 4096;
+std::array<std::atomic<bool>, kMaxLive> g_slot_used{};
+std::array<std::array<char, kMaxPath>, kMaxLive> g_slot_path{};
+
+int claim_slot(const std::string& path) {
+  if (path.size() >= kMaxPath) return -1;
+  for (std::size_t i = 0; i < kMaxLive; ++i) {
+    bool expected = false;
+    if (g_slot_used[i].compare_exchange_strong(expected, true)) {
+      std::memcpy(g_slot_path[i].data(), path.c_str(), path.size() + 1);
+      return static_cast<int>(i);
+    }
+  }
+  return -1;  // untracked: only an interrupt's cleanup misses it
+}
+
+void release_slot(int slot) {
+  if (slot >= 0) g_slot_used[static_cast<std::size_t>(slot)].store(false);
+}
+
+extern "C" void on_interrupt(int sig) {
+  for (std::size_t i = 0; i < kMaxLive; ++i) {
+    if (g_slot_used[i].load()) ::unlink(g_slot_path[i].data());
+  }
+  ::_exit(128 + sig);
+}
+
+}  // namespace
+
+void remove_temporaries_on_interrupt() {
+  struct sigaction action {};
+  action.sa_handler = &on_interrupt;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), temp_path_(path_ + ".tmp." + std::to_string(::getpid())) {
+  slot_ = claim_slot(temp_path_);
+  out_.open(temp_path_, std::ios::binary | std::ios::trunc);
+  if (!out_) {
+    release_slot(slot_);
+    throw std::runtime_error(path_ + ": cannot write (" + std::strerror(errno) + ")");
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    out_.close();
+    std::remove(temp_path_.c_str());
+  }
+  release_slot(slot_);
+}
+
+void AtomicFile::commit() {
+  out_.flush();
+  const bool ok = static_cast<bool>(out_);
+  out_.close();
+  if (!ok || out_.fail()) {
+    std::remove(temp_path_.c_str());
+    committed_ = true;
+    throw std::runtime_error(path_ + ": write failed (disk full?)");
+  }
+  if (std::rename(temp_path_.c_str(), path_.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    std::remove(temp_path_.c_str());
+    committed_ = true;
+    throw std::runtime_error(path_ + ": cannot rename into place (" + why + ")");
+  }
+  committed_ = true;
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+  AtomicFile f(path);
+  f.out() << text;
+  f.commit();
+}
+
+}  // namespace fragsim

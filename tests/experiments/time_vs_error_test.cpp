@@ -1,0 +1,205 @@
+// The time-against-error bench on cases worked out by hand: free flight, where ODE's positions lie
+// on the parabola with velocity V + g dt / 2, so two step sizes differ by |g| t (dt1 - dt2) / 2;
+// a drop onto the ground, where the thesis predictor is off by |g| t dt / 2 at first contact.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "experiments/time_vs_error.hpp"
+#include "io/number_format.hpp"
+#include "metrics/accuracy_probe.hpp"
+#include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
+#include "support/run_fragsim.hpp"
+#include "support/test_scenes.hpp"
+
+namespace fragsim {
+namespace {
+
+constexpr double kG = 9.81;
+
+// One box thrown up and away from a still camera, no ground: it never touches anything.
+Scene away_flight() {
+  Scene s = test::single_fragment({0.0, 1.6, -10.0}, 8.0);
+  s.explosion.offset_m = {0.0, -1.0, 1.0};  // radial push up and away from the camera
+  s.sim.gravity_mps2 = {0.0, -kG, 0.0};
+  s.sim.duration_s = 1.0;
+  return s;
+}
+
+// One box at rest 2 m up, dropped onto the ground.
+Scene drop() {
+  Scene s = test::single_fragment({0.0, 2.0, -10.0}, 0.0);
+  s.sim.gravity_mps2 = {0.0, -kG, 0.0};
+  s.ground.enabled = true;
+  s.sim.duration_s = 1.0;
+  return s;
+}
+
+AccuracyProbe probe_run(const Scene& scene, Predictor predictor) {
+  AccuracyProbe probe(1.0 / 30.0, predictor);
+  auto none = make_strategy("none", scene);
+  const std::array<RunObserver*, 1> obs{&probe};
+  simulate(scene, *none, obs);
+  return probe;
+}
+
+TEST(AccuracyProbe, SamplesEveryThirtiethOfASecond) {
+  Scene s = away_flight();  // 1 s at dt 1/60: 60 steps, a sample every 2
+  test::Recorder rec;
+  AccuracyProbe probe(1.0 / 30.0, Predictor::kThesis);
+  auto none = make_strategy("none", s);
+  const std::array<RunObserver*, 2> obs{&rec, &probe};
+  simulate(s, *none, obs);
+  ASSERT_EQ(probe.samples().size(), 30u);
+  for (std::size_t j = 0; j < 30; ++j) {
+    EXPECT_EQ(probe.samples()[j][0], rec.steps[2 * (j + 1)].fragments[0].position_m) << j;
+  }
+  EXPECT_EQ(probe.predicted_contacts(), 0);  // it never touches anything
+}
+
+TEST(AccuracyProbe, RejectsASampleIntervalThatIsNotWholeSteps) {
+  Scene s = away_flight();
+  s.sim.dt_s = 0.025;  // 1/30 s is 1.33 steps
+  EXPECT_THROW(probe_run(s, Predictor::kThesis), std::invalid_argument);
+}
+
+TEST(AccuracyProbe, ThesisPredictorIsOffByHalfGTDtAtFirstContact) {
+  const Scene s = drop();
+  const double dt = s.sim.dt_s;
+  const AccuracyProbe thesis = probe_run(s, Predictor::kThesis);
+  ASSERT_EQ(thesis.predicted_contacts(), 1);
+  // Bottom face at 1.95 m falls to the ground in sqrt(2 * 1.95 / g) = 0.63 s.
+  const double t_contact_s = thesis.first_contact_s()[0];
+  EXPECT_GT(t_contact_s, 0.60);
+  EXPECT_LT(t_contact_s, 0.70);
+  // Checked one step before the contact's step: tau = t_contact - dt.
+  const double tau_s = t_contact_s - dt;
+  EXPECT_NEAR(thesis.prediction_error_mean_m(), 0.5 * kG * tau_s * dt, 1e-12);
+  EXPECT_NEAR(thesis.prediction_error_max_m(), 0.5 * kG * tau_s * dt, 1e-12);
+
+  const AccuracyProbe discrete = probe_run(s, Predictor::kDiscrete);
+  EXPECT_LT(discrete.prediction_error_max_m(), 1e-12);
+}
+
+TEST(TimeVsError, FlightErrorBetweenStepSizesIsHalfGTimesTheirDifference) {
+  const Scene base = away_flight();
+  TimeVsErrorOptions o;
+  o.strategy = "none";
+  o.repeats = 1;
+  const std::vector<BenchConfig> configs = {
+      {"dt 1/60", "dt", {{"simulation.dt_s", format_double(1.0 / 60.0)}}},
+      {"dt 1/120", "dt", {{"simulation.dt_s", format_double(1.0 / 120.0)}}},
+      {"dt 1/480", "dt", {{"simulation.dt_s", format_double(1.0 / 480.0)}}},
+  };
+  std::vector<BenchDuplicate> dups;
+  const std::vector<BenchRow> rows =
+      run_time_vs_error(base, configs, reference_bench_config(), o, {}, &dups);
+  // dt 1/480 with `auto` is the exact solver at 1/480: the reference itself, not run twice.
+  ASSERT_EQ(dups.size(), 1u);
+  EXPECT_EQ(dups[0].name, "dt 1/480");
+  EXPECT_EQ(dups[0].same_as, "reference");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].config.name, "reference");
+  EXPECT_EQ(rows[0].flight_error_mean_m, 0.0);
+  EXPECT_EQ(rows[0].steps, 480);
+
+  // Samples at t_j = j / 30, j = 1..30: the mean of t_j is 31 / 60 s, the largest 1 s.
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const double ddt = rows[r].dt_s - 1.0 / 480.0;
+    EXPECT_NEAR(rows[r].flight_error_mean_m, 0.5 * kG * ddt * 31.0 / 60.0, 1e-9)
+        << rows[r].config.name;
+    EXPECT_NEAR(rows[r].flight_error_max_m, 0.5 * kG * ddt * 1.0, 1e-9) << rows[r].config.name;
+    // Never touching anything, every sample is flight.
+    EXPECT_EQ(rows[r].position_error_mean_m, rows[r].flight_error_mean_m);
+    EXPECT_EQ(rows[r].near_fragments, 0);
+    EXPECT_EQ(rows[r].candidate_difference, 0);
+  }
+}
+
+TEST(TimeVsError, ConfigurationErrorsNameTheConfiguration) {
+  const Scene base = away_flight();
+  TimeVsErrorOptions o;
+  o.strategy = "none";
+  o.repeats = 1;
+  try {
+    run_time_vs_error(base, {{"odd", "custom", {{"simulation.dt_s", "0.025"}}}},
+                      reference_bench_config(), o);
+    FAIL() << "a step that does not divide 1/30 s must be refused";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("bench config 'odd'"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(run_time_vs_error(base, {{"bad", "custom", {{"simulation.dt_s", "-1"}}}},
+                                 reference_bench_config(), o),
+               SceneError);
+}
+
+BenchRow row(const std::string& name, double time_s, double error_m) {
+  BenchRow r;
+  r.config.name = name;
+  r.compute_s_per_sim_s = time_s;
+  r.flight_error_mean_m = error_m;
+  return r;
+}
+
+TEST(TimeVsError, ParetoFrontKeepsOnlyUndominatedRows) {
+  std::vector<BenchRow> rows = {row("slow exact", 4.0, 0.0), row("fast rough", 1.0, 1.0),
+                                row("dominated", 2.0, 1.5), row("middle", 2.0, 0.5),
+                                row("tie on time, worse", 2.0, 0.6)};
+  mark_pareto_front(rows);
+  EXPECT_TRUE(rows[0].pareto);
+  EXPECT_TRUE(rows[1].pareto);
+  EXPECT_FALSE(rows[2].pareto);
+  EXPECT_TRUE(rows[3].pareto);
+  EXPECT_FALSE(rows[4].pareto);
+}
+
+const std::string kSmallScene = std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini";
+
+TEST(BenchCommand, WritesTheCsvWithTheReferenceFirst) {
+  const std::string path = testing::TempDir() + "fragsim_bench_test.csv";
+  std::filesystem::remove(path);
+  const test::Result r =
+      test::run_fragsim("bench --scene " + kSmallScene +
+                        " --simulation.duration_s 1 --groups dt --repeats 1 --out " + path);
+  ASSERT_EQ(r.status, 0) << r.out;
+  std::ifstream in(path);
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  EXPECT_EQ(header.rfind("config,group,overrides,dt_s,steps,compute_s_per_sim_s", 0), 0u) << header;
+  EXPECT_EQ(first.rfind("reference,reference,", 0), 0u) << first;
+  int rows = 1;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 5);  // reference, default (= dt 1/60), dt 1/30, 1/120, 1/240
+  EXPECT_NE(r.out.find("dt 1/60: the same simulation as default"), std::string::npos) << r.out;
+  std::filesystem::remove(path);
+}
+
+TEST(BenchCommand, BadOptionsAreOneLineUsageErrors) {
+  struct Case {
+    std::string args, needle;
+  };
+  const std::vector<Case> cases = {
+      {"--repeats 0", "--repeats 0: must be in [1, 100]"},
+      {"--groups dt,warp", "--groups: no group 'warp'"},
+      {"--config nocolon", "--config nocolon: expected NAME:key=value"},
+      {"--config x:simulation.dt_s", "is not key=value"},
+      {"--strategy bogus", "--strategy:"},
+      {"--out /nonexistent-dir/x.csv", "--out:"},
+  };
+  for (const Case& c : cases) {
+    const test::Result r = test::run_fragsim("bench --scene " + kSmallScene + " " + c.args);
+    EXPECT_EQ(r.status, 2) << c.args << ": " << r.out;
+    EXPECT_NE(r.out.find(c.needle), std::string::npos) << c.args << ": " << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << c.args << ": " << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace fragsim

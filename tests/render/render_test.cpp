@@ -1,0 +1,569 @@
+// The software rasteriser and the frames: hand-worked boxes in front of a 90-degree, square camera
+// at the origin looking down -z (so a point at depth z and lateral offset x lands on column
+// 100 + 100 x / z of a 200-pixel image, and row 100 - 100 y / z), PNG files, the frame recorder,
+// the contact sheet, and `fragsim render` / `compare --sheet` through the executable.
+
+#include <gtest/gtest.h>
+
+#include "support/run_fragsim.hpp"
+
+#include <Eigen/Geometry>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "experiments/evaluation.hpp"
+#include "render/bitmap_font.hpp"
+#include "render/contact_sheet.hpp"
+#include "render/frame_recorder.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/image.hpp"
+#include "render/rasterizer.hpp"
+#include "support/test_scenes.hpp"
+
+namespace fragsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kSize = 200;  // pixels; 100 pixels per unit of x / z
+
+CameraPose square_camera(double near_m = 0.1) {
+  CameraPose cam;  // eye at the origin, right +x, up +y, forward -z
+  cam.fovy_deg = 90.0;
+  cam.aspect = 1.0;
+  cam.near_m = near_m;
+  return cam;
+}
+
+// A scene without ground, so the background is only sky.
+Scene sky_scene() {
+  Scene s;
+  s.ground.enabled = false;
+  return s;
+}
+
+FrameStyle square_style() {
+  FrameStyle style;
+  style.width_px = kSize;
+  style.height_px = kSize;
+  return style;
+}
+
+// An axis-aligned box given by its camera-space extents (depth = -world z).
+FragmentState box(double x0, double x1, double y0, double y1, double depth0, double depth1) {
+  FragmentState f;
+  f.position_m = {0.5 * (x0 + x1), 0.5 * (y0 + y1), -0.5 * (depth0 + depth1)};
+  f.half_extents_m = {0.5 * (x1 - x0), 0.5 * (y1 - y0), 0.5 * (depth1 - depth0)};
+  f.radius_m = f.half_extents_m.norm();
+  f.mass_kg = 1.0;
+  return f;
+}
+
+StepSnapshot snapshot(const CameraPose& cam, const std::vector<FragmentState>& frags) {
+  StepSnapshot s;
+  s.camera = cam;
+  s.fragments = frags;
+  return s;
+}
+
+Image render(const std::vector<FragmentState>& frags, const CameraPose& cam = square_camera(),
+             const Scene& scene = sky_scene(), const FrameStyle& style = square_style()) {
+  FrameRenderer r(scene, style);
+  return r.render(snapshot(cam, frags));
+}
+
+// Which pixels differ from the same view without fragments.
+std::vector<std::vector<bool>> drawn(const Image& img, const CameraPose& cam = square_camera()) {
+  const Image empty = render({}, cam);
+  std::vector<std::vector<bool>> d(img.height(), std::vector<bool>(img.width()));
+  for (int y = 0; y < img.height(); ++y) {
+    for (int x = 0; x < img.width(); ++x) d[y][x] = !(img.at(x, y) == empty.at(x, y));
+  }
+  return d;
+}
+
+const Eigen::Vector3d kTowardCamera{0.0, 0.0, 1.0};  // the outward normal of a box's near face
+
+// --- The rasteriser -----------------------------------------------------------------------------
+
+TEST(Rasterizer, ClipsAPolygonAtThePlaneExactly) {
+  const std::array<Eigen::Vector3d, 3> tri{Eigen::Vector3d(0, 0, 0.05), Eigen::Vector3d(1, 0, 1.0),
+                                           Eigen::Vector3d(0, 1, 1.0)};
+  std::array<Eigen::Vector3d, 4> out;
+  const int n = clip_polygon_z(tri.data(), 3, 0.1, true, out.data());
+  ASSERT_EQ(n, 4);  // the corner in front of the plane becomes two points on it
+  int on_plane = 0;
+  for (int i = 0; i < n; ++i) {
+    EXPECT_GE(out[i].z(), 0.1);
+    on_plane += out[i].z() == 0.1;
+  }
+  EXPECT_EQ(on_plane, 2);
+  // The cut point on edge (0, 0, 0.05) -> (1, 0, 1): x = (0.1 - 0.05) / 0.95.
+  EXPECT_NEAR(out[0].x(), 0.05 / 0.95, 1e-15);
+  EXPECT_EQ(clip_polygon_z(tri.data(), 3, 2.0, true, out.data()), 0);   // all in front
+  EXPECT_EQ(clip_polygon_z(tri.data(), 3, 0.01, true, out.data()), 3);  // all behind
+}
+
+TEST(Rasterizer, TriangleCoversThePixelsWhoseCentresItContains) {
+  Image img(kSize, kSize);
+  Rasterizer r;
+  r.begin(img, square_camera());
+  const Rgb red{255, 0, 0};
+  // At depth 2, camera-space (0, 0) to (1, 0) to (0, 1) spans columns 100..150, rows 50..100.
+  r.fill_triangle({0, 0, 2}, {1, 0, 2}, {0, 1, 2}, red);
+  EXPECT_EQ(img.at(101, 98), red);
+  EXPECT_EQ(img.at(140, 98), red);
+  EXPECT_EQ(img.at(101, 52), red);
+  EXPECT_EQ(img.at(99, 98), Rgb{});    // left of x = 0
+  EXPECT_EQ(img.at(101, 101), Rgb{});  // below y = 0
+  EXPECT_EQ(img.at(140, 60), Rgb{});   // beyond the hypotenuse
+  EXPECT_FLOAT_EQ(r.inverse_depth(110, 90), 0.5f);
+  EXPECT_EQ(r.inverse_depth(10, 10), 0.0f);
+}
+
+TEST(Rasterizer, SegmentIsClippedAtTheNearPlane) {
+  Image img(kSize, kSize);
+  Rasterizer r;
+  r.begin(img, square_camera());
+  ScreenPoint a;
+  ScreenPoint b;
+  // From depth 0.05 (in front of the near plane) to depth 1 along x = 0.05: the drawn part starts
+  // on the plane, at x / z = 0.5 (column 150), and ends at x / z = 0.05 (column 105).
+  ASSERT_TRUE(r.draw_segment({0.05, 0, 0.05}, {0.05, 0, 1.0}, {255, 255, 255}, 1, &a, &b));
+  EXPECT_NEAR(a.x, 150.0, 1e-9);
+  EXPECT_NEAR(b.x, 105.0, 1e-9);
+  EXPECT_EQ(img.at(160, 100), Rgb{});  // the part in front of the plane would reach column 200
+  EXPECT_FALSE(r.draw_segment({0, 0, 0.01}, {1, 0, 0.05}, {255, 255, 255}));
+}
+
+// --- Frames -------------------------------------------------------------------------------------
+
+TEST(Frame, SquareFacingTheCameraCoversThePredictedRectangle) {
+  // A 1 m square plate (1 mm thick) at depth 5, its centre at (0.3, 0.2): its near face at depth
+  // 4.9995 spans columns 100 + 100 (-0.2 .. 0.8) / 4.9995 and rows 100 - 100 (0.7 .. -0.3)
+  // / 4.9995.
+  const FragmentState plate = box(-0.2, 0.8, -0.3, 0.7, 4.9995, 5.0005);
+  const auto d = drawn(render({plate}));
+  const double z = 4.9995;
+  const double x0 = 100 - 100 * 0.2 / z;
+  const double x1 = 100 + 100 * 0.8 / z;
+  const double y0 = 100 - 100 * 0.7 / z;
+  const double y1 = 100 + 100 * 0.3 / z;
+  int inside = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const double cx = x + 0.5;
+      const double cy = y + 0.5;
+      if (cx > x0 + 1 && cx < x1 - 1 && cy > y0 + 1 && cy < y1 - 1) {
+        EXPECT_TRUE(d[y][x]) << x << "," << y;
+        ++inside;
+      } else if (cx < x0 - 1 || cx > x1 + 1 || cy < y0 - 1 || cy > y1 + 1) {
+        EXPECT_FALSE(d[y][x]) << x << "," << y;
+      }
+    }
+  }
+  EXPECT_GT(inside, 300);
+}
+
+TEST(Frame, RightIsScreenRightAndUpIsScreenTop) {
+  // A camera looking down +x: its right is +z, its up +y.
+  CameraPose cam = square_camera();
+  cam.forward = {1, 0, 0};
+  cam.right = {0, 0, 1};
+  cam.up = {0, 1, 0};
+  FragmentState f;
+  f.half_extents_m = {0.1, 0.1, 0.1};
+  f.position_m = {3, 0, 1};  // to the camera's right
+  auto d = drawn(render({f}, cam), cam);
+  EXPECT_TRUE(d[100][100 + static_cast<int>(100.0 / 3.0)]);
+  EXPECT_FALSE(d[100][100 - static_cast<int>(100.0 / 3.0)]);
+  f.position_m = {3, 1, 0};  // above the view axis
+  d = drawn(render({f}, cam), cam);
+  EXPECT_TRUE(d[100 - static_cast<int>(100.0 / 3.0)][100]);
+  EXPECT_FALSE(d[100 + static_cast<int>(100.0 / 3.0)][100]);
+}
+
+TEST(Frame, FacesAreShadedByTheirWorldNormal) {
+  // A cube below and left of the view axis shows its near face, its top and its right side.
+  FragmentState f = box(-1.0, -0.6, -1.0, -0.6, 2.0, 2.4);
+  const Image img = render({f});
+  const Rgb base = fragment_colour(0);
+  // Near face (depth 2): columns 50..70, rows 130..150.
+  EXPECT_EQ(img.at(60, 140), shaded_colour(base, kTowardCamera));
+  // Top (y = -0.6, depths 2..2.4): rows 100 + 100 * 0.6 / z = 125..130; column 100 - 80 / 2.2.
+  EXPECT_EQ(img.at(64, 127), shaded_colour(base, {0, 1, 0}));
+  // Right side (x = -0.6, depths 2..2.4): columns 100 - 60 / z = 70..75.
+  EXPECT_EQ(img.at(72, 136), shaded_colour(base, {1, 0, 0}));
+  // The light comes from above: a top is brighter than a near face, a near face than a right side.
+  const auto sum = [](Rgb c) { return c.r + c.g + c.b; };
+  EXPECT_GT(sum(shaded_colour(base, {0, 1, 0})), sum(shaded_colour(base, kTowardCamera)));
+  EXPECT_GT(sum(shaded_colour(base, kTowardCamera)), sum(shaded_colour(base, {1, 0, 0})));
+  EXPECT_EQ(shaded_colour(base, {0, -1, 0}), shaded_colour(base, {1, 0, 0}));  // both unlit
+}
+
+TEST(Frame, NearerOfTwoOverlappingBoxesWinsWhateverTheOrder) {
+  const FragmentState near = box(-0.5, 0.5, -0.5, 0.5, 3.0, 3.2);
+  const FragmentState far = box(-0.2, 1.0, -0.2, 1.0, 5.0, 5.2);
+  // Fragment 0 drawn first, then 1: the colour at the centre is the near box's, whichever it is.
+  Image img = render({far, near});
+  EXPECT_EQ(img.at(100, 100), shaded_colour(fragment_colour(1), kTowardCamera));
+  img = render({near, far});
+  EXPECT_EQ(img.at(100, 100), shaded_colour(fragment_colour(0), kTowardCamera));
+  // Where only the far box shows (x / z = 0.15 at depth 5 lies beyond the near box's 0.5 / 3).
+  EXPECT_EQ(img.at(100 + 17, 100 - 17), shaded_colour(fragment_colour(1), kTowardCamera));
+}
+
+TEST(Frame, BoxCrossingTheNearPlaneIsCutOpen) {
+  // Depths 0.05 .. 0.5 across the near plane at 0.1, x in [0.02, 0.06], y in [-0.1, 0.1].
+  // - In front of the plane (not drawn): x / z up to 0.06 / 0.05 = 1.2, beyond what the part
+  //   behind reaches (0.06 / 0.1 = 0.6): column 170 (x / z = 0.7).
+  // - The cut (z = 0.1, x / z in [0.2, 0.6]): the hole, the box's inside is not drawn: column 140.
+  // - Behind the plane: its side x = 0.02 faces the eye, at x / z in [0.04, 0.2]: column 110.
+  const FragmentState f = box(0.02, 0.06, -0.1, 0.1, 0.05, 0.5);
+  const auto d = drawn(render({f}));
+  EXPECT_FALSE(d[100][170]);
+  EXPECT_FALSE(d[100][140]);
+  EXPECT_TRUE(d[100][110]);
+  EXPECT_TRUE(d[100][105]);
+  // The same box with the near plane at 1 cm is whole: its near face covers column 170.
+  const CameraPose close = square_camera(0.01);
+  EXPECT_TRUE(drawn(render({f}, close), close)[100][170]);
+  // The cut overlay outlines the section: its left edge is column 120 (x / z = 0.2).
+  FrameStyle style = square_style();
+  style.overlays.cuts = true;
+  const Image cut = render({f}, square_camera(), sky_scene(), style);
+  EXPECT_TRUE(cut.at(119, 100) == kCutColour || cut.at(120, 100) == kCutColour);
+  EXPECT_FALSE(cut.at(140, 100) == kCutColour);
+}
+
+TEST(Frame, BoxWhollyInFrontOfTheNearPlaneOrBehindTheEyeIsNotDrawn) {
+  const auto d1 = drawn(render({box(-0.01, 0.01, -0.01, 0.01, 0.02, 0.05)}));
+  const auto d2 = drawn(render({box(-1, 1, -1, 1, -3, -2)}));
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      ASSERT_FALSE(d1[y][x] || d2[y][x]) << x << "," << y;
+    }
+  }
+}
+
+TEST(Frame, NonFiniteFragmentIsSkipped) {
+  FragmentState f = box(-0.5, 0.5, -0.5, 0.5, 3, 3.2);
+  f.position_m.x() = std::nan("");
+  const Image img = render({f});
+  EXPECT_EQ(img.bytes(), render({}).bytes());
+}
+
+TEST(Frame, GroundBelowTheHorizonSkyAbove) {
+  Scene scene;  // ground at y = 0
+  CameraPose cam = square_camera();
+  cam.eye_m = {0.0, 1.6, 0.0};
+  const Image img = render({}, cam, scene);
+  const Rgb top = img.at(100, 5);
+  const Rgb bottom = img.at(100, 195);
+  EXPECT_GT(top.b, top.r + 40);                  // blue sky
+  EXPECT_LT(std::abs(bottom.r - bottom.b), 30);  // grey ground
+  // The horizon of a level camera is the middle row: just above it is sky, just below it ground
+  // (hazed toward the sky's horizon colour, but not blue).
+  EXPECT_GT(img.at(100, 98).b, img.at(100, 98).r + 20);
+  EXPECT_LT(img.at(100, 103).b, img.at(100, 103).r + 20);
+  // A box sunk halfway into the ground (world y -1 .. 1, near face at depth 4): above the ground
+  // its near face shows (world y 0.5: row 100 + 100 * 1.1 / 4 = 127.5), below it the ground hides
+  // it (world y -0.5, row 152.5, where the ground lies at depth 1.6 / 0.525 = 3.05).
+  FragmentState sunk = box(-0.5, 0.5, -1.0, 1.0, 4.0, 5.0);
+  const Image with_box = render({sunk}, cam, scene);
+  const Rgb face = shaded_colour(fragment_colour(0), kTowardCamera);
+  EXPECT_EQ(with_box.at(100, 127), face);
+  EXPECT_FALSE(with_box.at(100, 152) == face);
+  EXPECT_EQ(with_box.at(100, 152), img.at(100, 152));
+}
+
+TEST(Frame, CandidatesAndForcesOverlays) {
+  FragmentState f = box(-0.5, 0.5, -0.5, 0.5, 3, 4);
+  f.mass_kg = 2.0;
+  const std::vector<FragmentState> frags{f};
+  const std::vector<int> candidates{0};
+  // 40 N on 2 kg: 20 m/s^2, an arrow of 1 m to the right at the default 0.05 m per m/s^2.
+  const std::vector<AppliedForce> forces{{0, {40.0, 0.0, 0.0}}};
+  StepSnapshot snap = snapshot(square_camera(), frags);
+  snap.candidates = candidates;
+  snap.forces = forces;
+  FrameStyle style = square_style();
+  style.overlays.candidates = true;
+  style.overlays.forces = true;
+  style.overlays.central = true;
+  FrameRenderer r(sky_scene(), style);
+  const Image img = r.render(snap);
+  // The near face's left edge at x / z = -0.5 / 3: column 83.3; the arrow from the centre (depth
+  // 3.5) to x = 1: columns 100 .. 128.6 on row 100.
+  EXPECT_TRUE(img.at(83, 110) == kCandidateColour || img.at(84, 110) == kCandidateColour);
+  EXPECT_EQ(img.at(120, 100), kForceColour);
+  EXPECT_FALSE(img.at(135, 100) == kForceColour);
+  EXPECT_EQ(img.at(50, 120), kCentralColour);  // the central half: columns 50 .. 150
+  EXPECT_EQ(img.at(10, 10), render({f}).at(10, 10));
+}
+
+TEST(Frame, SameSnapshotGivesTheSameBytes) {
+  const Scene scene;  // with ground
+  std::vector<FragmentState> frags;
+  for (int i = 0; i < 50; ++i) {
+    FragmentState f = box(-0.2, 0.2, -0.2, 0.2, 1.0, 1.4);
+    f.position_m += Eigen::Vector3d(0.1 * (i % 7) - 0.3, 0.05 * (i % 5), -0.3 * i);
+    f.rotation =
+        Eigen::AngleAxisd(0.3 * i, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    frags.push_back(f);
+  }
+  CameraPose cam = square_camera();
+  cam.eye_m = {0.0, 1.0, 0.0};
+  for (FragmentState& f : frags) f.position_m.y() += 1.0;
+  FrameStyle style = square_style();
+  style.overlays.cuts = true;
+  FrameRenderer r(scene, style);
+  const Image a = r.render(snapshot(cam, frags));
+  const Image b = r.render(snapshot(cam, frags));
+  EXPECT_EQ(a.bytes(), b.bytes());
+  EXPECT_EQ(encode_png(a), encode_png(b));
+  EXPECT_EQ(a.bytes(), FrameRenderer(scene, style).render(snapshot(cam, frags)).bytes());
+}
+
+// --- PNG and text -------------------------------------------------------------------------------
+
+TEST(Png, EncodesAndDecodesExactly) {
+  Image img(7, 3, {10, 20, 30});
+  img.set(6, 2, {255, 0, 128});
+  const std::string png = encode_png(img);
+  ASSERT_GE(png.size(), 8u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  const Image back = decode_png(png);
+  EXPECT_EQ(back.width(), 7);
+  EXPECT_EQ(back.height(), 3);
+  EXPECT_EQ(back.bytes(), img.bytes());
+  EXPECT_THROW(decode_png("not a png"), std::runtime_error);
+  EXPECT_THROW(encode_png(Image()), std::runtime_error);
+}
+
+TEST(Png, FileIsWrittenWholeWithoutDebris) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "fragsim_png";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  Image img(16, 9, {1, 2, 3});
+  write_png((dir / "a.png").string(), img);
+  EXPECT_EQ(read_png((dir / "a.png").string()).bytes(), img.bytes());
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1);
+  EXPECT_THROW(write_png((dir / "missing" / "a.png").string(), img), std::runtime_error);
+}
+
+TEST(Font, DrawsInsideItsBoxAndMeasuresIt) {
+  EXPECT_EQ(text_width_px("t = 0.30 s", 1), 10 * kGlyphAdvancePx - 1);
+  EXPECT_EQ(text_width_px("ab", 2), 2 * (2 * kGlyphAdvancePx - 1));
+  for (const char c : std::string("0123456789abcdefghijklmnopqrstuvwxyz-.= s")) {
+    EXPECT_TRUE(has_glyph(c)) << c;
+  }
+  Image img(40, 20);
+  draw_text(img, 3, 2, "edge-min", {255, 255, 255}, 1);
+  int lit = 0;
+  for (int y = 0; y < img.height(); ++y) {
+    for (int x = 0; x < img.width(); ++x) {
+      if (img.at(x, y) == Rgb{255, 255, 255}) {
+        ++lit;
+        EXPECT_GE(x, 3);
+        EXPECT_LT(x, 3 + text_width_px("edge-min"));
+        EXPECT_GE(y, 2);
+        EXPECT_LT(y, 2 + kGlyphHeightPx);
+      }
+    }
+  }
+  EXPECT_GT(lit, 40);
+  // "g" has a descender: something is drawn below the baseline (row 7 of the glyph).
+  Image g(6, kGlyphHeightPx);
+  draw_text(g, 0, 0, "g", {255, 255, 255});
+  bool below = false;
+  for (int x = 0; x < 5; ++x) below = below || g.at(x, 8) == Rgb{255, 255, 255};
+  EXPECT_TRUE(below);
+}
+
+// --- Recorder and contact sheet -----------------------------------------------------------------
+
+TEST(FrameRecorder, KeepsTheChosenStepsOfEachRunAsTheyWere) {
+  const Scene scene = test::single_fragment({0.0, 1.6, -10.0});
+  FrameRecorder frames({10, 0, 3, 10, 1000});
+  test::Recorder all;
+  EvaluationOptions opts;
+  opts.occlusion = false;
+  opts.extra = {&frames, &all};
+  evaluate(scene, "none", opts);
+  const std::vector<RecordedFrame>* kept = frames.frames("none");
+  ASSERT_NE(kept, nullptr);
+  ASSERT_EQ(kept->size(), 3u);  // 0, 3, 10 (1000 is past the run's end)
+  for (const RecordedFrame& f : *kept) {
+    EXPECT_NEAR(f.t_s, f.step * scene.sim.dt_s, 1e-12);
+    ASSERT_EQ(f.fragments.size(), 1u);
+    EXPECT_EQ(f.fragments[0].position_m, all.steps[f.step].fragments[0].position_m);
+    EXPECT_EQ(f.view().fragments.data(), f.fragments.data());
+  }
+  EXPECT_EQ(frames.frame("none", 3)->step, 3);
+  EXPECT_EQ(frames.frame("none", 4), nullptr);
+  EXPECT_EQ(frames.frames("edge"), nullptr);
+  evaluate(scene, "edge", opts);
+  EXPECT_EQ(frames.strategies(), (std::vector<std::string>{"none", "edge"}));
+}
+
+TEST(ContactSheet, DefaultStepsAndCellsAreTheFrames) {
+  EXPECT_EQ(default_sheet_steps(180), (std::vector<int>{18, 36, 45, 63}));
+  EXPECT_EQ(default_sheet_steps(2), (std::vector<int>{0, 1}));
+
+  Scene scene = test::single_fragment({0.0, 1.6, -3.0}, 2.0);
+  scene.ground.enabled = true;
+  scene.ground.height_m = 0.0;
+  FrameRecorder rec({5, 20});
+  EvaluationOptions opts;
+  opts.occlusion = false;
+  opts.extra = {&rec};
+  evaluate(scene, "none", opts);
+  evaluate(scene, "edge", opts);
+  SheetStyle style;
+  style.cell_width_px = 64;
+  style.overlays = {};
+  const std::vector<std::string> rows{"none", "edge", "wall"};  // wall did not run: empty cells
+  const Image sheet = contact_sheet(scene, rec, rows, {5, 20}, style);
+  const int cell_h = static_cast<int>(std::lround(64 / scene.camera.aspect));
+  // The layout of contact_sheet.cpp: margins of 10, gaps of 4, text twice the font's size.
+  const int x0 = 10 + text_width_px("single", 2) + 10;
+  const int y0 = 10 + 2 * kGlyphHeightPx + 10;
+  EXPECT_EQ(sheet.width(), x0 + 2 * 64 + 4 + 10);
+  EXPECT_EQ(sheet.height(), y0 + 3 * cell_h + 2 * 4 + 10);
+  // The cell of edge at step 20 is that frame, drawn at the cell's size.
+  FrameStyle fs;
+  fs.width_px = 64;
+  fs.height_px = cell_h;
+  const Image frame = FrameRenderer(scene, fs).render(rec.frame("edge", 20)->view());
+  const int cx = x0 + 64 + 4;
+  const int cy = y0 + cell_h + 4;
+  for (int y = 0; y < cell_h; ++y) {
+    for (int x = 0; x < 64; ++x) ASSERT_EQ(sheet.at(cx + x, cy + y), frame.at(x, y));
+  }
+}
+
+// --- The executable -----------------------------------------------------------------------------
+
+using test::Result;
+Result fragsim(const std::string& args) {
+  return test::run_fragsim(args);
+}
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+const std::string kThesis125 = "--scene " + std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini";
+const std::string kSmall = kThesis125 + " --simulation.duration_s 0.5";  // 30 steps
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / name;
+  fs::remove_all(d);
+  return d;
+}
+
+TEST(RenderCommand, WritesTheSameFramesTwice) {
+  const fs::path a = fresh_dir("fragsim_render_a");
+  const fs::path b = fresh_dir("fragsim_render_b");
+  // The whole run (3 s), so `edge` has candidates (46 at first) and forces to draw.
+  const std::string args = "render " + kThesis125 +
+                           " --strategy edge --steps 0:30:10 --size 160x90 "
+                           "--overlays candidates,forces,central,cuts --out ";
+  const Result ra = fragsim(args + a.string());
+  ASSERT_EQ(ra.status, 0) << ra.out;
+  ASSERT_EQ(fragsim(args + b.string()).status, 0);
+  for (const char* name :
+       {"frame_00000.png", "frame_00010.png", "frame_00020.png", "frame_00030.png"}) {
+    const std::string png = read_all(a / name);
+    ASSERT_FALSE(png.empty()) << name;
+    EXPECT_EQ(png, read_all(b / name)) << name;
+    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+    const Image img = decode_png(png);
+    EXPECT_EQ(img.width(), 160);
+    EXPECT_EQ(img.height(), 90);
+    bool outlined = false;
+    for (int y = 0; y < img.height(); ++y) {
+      for (int x = 0; x < img.width(); ++x) outlined = outlined || img.at(x, y) == kCandidateColour;
+    }
+    // Step 0 is the explosion: no strategy step has run yet, so no candidates.
+    EXPECT_EQ(outlined, std::string(name) != "frame_00000.png") << name;
+  }
+  const Image first = read_png((a / "frame_00000.png").string());
+  EXPECT_GT(first.at(2, 2).b, first.at(2, 2).r + 40);  // sky in the corner
+  int files = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(a)) ++files;
+  EXPECT_EQ(files, 4);
+  // The frames of a rerun into the same folder need --force.
+  const Result again = fragsim(args + a.string());
+  EXPECT_EQ(again.status, 2);
+  EXPECT_EQ(lines(again.out), 1) << again.out;
+  EXPECT_NE(again.out.find("--force"), std::string::npos) << again.out;
+  EXPECT_EQ(fragsim(args + a.string() + " --force").status, 0);
+}
+
+TEST(RenderCommand, BadOptionsAreOneLineUsageErrors) {
+  const fs::path dir = fresh_dir("fragsim_render_bad");
+  const std::string out = " --out " + dir.string();
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"--size 640", "--size"},
+      {"--size 8x8", "--size"},
+      {"--size 640x360x2", "--size"},
+      {"--steps 5:2", "--steps"},
+      {"--steps 0:31", "--steps"},  // 0.5 s is 30 steps
+      {"--steps 0:10:0", "--steps"},
+      {"--steps a:b", "--steps"},
+      {"--overlays candidates,sparkles", "sparkles"},
+      {"--strategy teleport", "teleport"},
+  };
+  for (const auto& [opt, named] : cases) {
+    const Result r = fragsim("render " + kSmall + " " + opt + out);
+    EXPECT_EQ(r.status, 2) << opt << ": " << r.out;
+    EXPECT_EQ(lines(r.out), 1) << opt << ": " << r.out;
+    EXPECT_NE(r.out.find(named), std::string::npos) << opt << ": " << r.out;
+  }
+  EXPECT_EQ(fragsim("render " + kSmall).status, 2);  // no --out
+  EXPECT_FALSE(fs::exists(dir));                     // refused before anything was created
+}
+
+TEST(CompareSheet, WritesOneRowPerStrategyAndChecksItsOptions) {
+  const fs::path dir = fresh_dir("fragsim_sheet");
+  fs::create_directories(dir);
+  const fs::path sheet = dir / "sheet.png";
+  const Result r = fragsim("compare " + kSmall + " --strategies none,edge-min --sheet " +
+                           sheet.string() + " --sheet-steps 5,15,25");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Image img = read_png(sheet.string());
+  // 3 cells of 320 wide and 180 high (16:9), in the layout of contact_sheet.cpp.
+  EXPECT_EQ(img.width(), 10 + text_width_px("thesis125", 2) + 10 + 3 * 320 + 2 * 4 + 10);
+  EXPECT_EQ(img.height(), 10 + 2 * kGlyphHeightPx + 10 + 2 * 180 + 4 + 10);
+
+  const Result bad =
+      fragsim("compare " + kSmall + " --sheet " + sheet.string() + " --sheet-steps 5,99");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(lines(bad.out), 1) << bad.out;
+  EXPECT_NE(bad.out.find("--sheet-steps"), std::string::npos) << bad.out;
+  const Result no_dir = fragsim("compare " + kSmall + " --sheet " + (dir / "no/s.png").string());
+  EXPECT_EQ(no_dir.status, 2);
+  EXPECT_EQ(lines(no_dir.out), 1) << no_dir.out;
+  EXPECT_EQ(fragsim("compare " + kSmall + " --sheet-steps 1,2").status, 2);
+}
+
+}  // namespace
+}  // namespace fragsim

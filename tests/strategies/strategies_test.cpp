@@ -1,0 +1,234 @@
+// Each strategy on one fragment fired along a known line at a still camera (test_scenes.hpp).
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+#include "metrics/near_plane_metric.hpp"
+#include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
+#include "strategies/near_plane_strategy.hpp"
+#include "support/test_scenes.hpp"
+
+namespace fragsim {
+namespace {
+
+struct Outcome {
+  test::Recorder rec;
+  RunSummary summary;
+};
+
+Outcome run(const Scene& scene, const std::string& strategy) {
+  Outcome o;
+  auto s = make_strategy(strategy, scene);
+  NearPlaneMetric near;
+  const std::array<RunObserver*, 2> observers{&o.rec, &near};
+  simulate(scene, *s, observers);
+  near.fill(o.summary);
+  return o;
+}
+
+// 10 m ahead, 3 cm right of and 2 cm above the view axis, flying straight at the lens.
+const Eigen::Vector3d kAtLens{0.03, 1.62, -10.0};
+// The same line 2 m to the right.
+const Eigen::Vector3d kBeside{2.03, 1.62, -10.0};
+
+TEST(NoneStrategy, FragmentAtTheLensHitsAndFliesStraight) {
+  const Outcome o = run(test::single_fragment(kAtLens), "none");
+  EXPECT_EQ(o.summary.near_fragments, 1);
+  EXPECT_EQ(o.summary.camera_hit_fragments, 1);
+  for (const auto& step : o.rec.steps) {
+    EXPECT_TRUE(step.forces.empty());
+    // No gravity, no contact: x and y never change, the speed stays 10 m/s.
+    EXPECT_NEAR(step.fragments[0].position_m.x(), 0.03, 1e-12);
+    EXPECT_NEAR(step.fragments[0].position_m.y(), 1.62, 1e-12);
+    EXPECT_NEAR(step.fragments[0].velocity_mps.z(), 10.0, 1e-12);
+  }
+}
+
+TEST(EdgeStrategy, FragmentAtTheLensIsPushedToTheNearestEdgeAndMisses) {
+  const Outcome o = run(test::single_fragment(kAtLens), "edge");
+  // A candidate from the prediction at t = 0.
+  ASSERT_GT(o.rec.steps.size(), 1u);
+  ASSERT_EQ(o.rec.steps[1].candidates.size(), 1u);
+  // It crosses the near plane at (0.03, 0.02): the top edge (0.038 away) is nearer than the right
+  // one (0.073), so every push is straight up.
+  int pushes = 0;
+  for (const auto& step : o.rec.steps) {
+    for (const AppliedForce& f : step.forces) {
+      ++pushes;
+      EXPECT_GT(f.force_N.y(), 0.0);
+      EXPECT_EQ(f.force_N.x(), 0.0);
+      EXPECT_EQ(f.force_N.z(), 0.0);
+    }
+  }
+  EXPECT_GT(pushes, 0);
+  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+}
+
+TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
+  const Outcome o = run(test::single_fragment({0.09, 1.601, -10.0}), "edge");
+  int pushes = 0;
+  for (const auto& step : o.rec.steps) {
+    for (const AppliedForce& f : step.forces) {
+      ++pushes;
+      EXPECT_GT(f.force_N.x(), 0.0);
+      EXPECT_EQ(f.force_N.y(), 0.0);
+    }
+  }
+  EXPECT_GT(pushes, 0);
+  EXPECT_EQ(o.summary.near_fragments, 0);
+}
+
+TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
+  // The thesis ball: V_c (t_G - t) + radii = 1 m/s * 1.5 s + 0.27 m < 2 m, with t_G the cap of
+  // 1.5 s (zero gravity: the path never comes down; the default 3 s cap would give 3.27 m).
+  Scene scene = test::single_fragment(kBeside);
+  scene.edge.horizon_cap_s = 1.5;
+  const Outcome o = run(scene, "edge");
+  for (const auto& step : o.rec.steps) {
+    EXPECT_TRUE(step.candidates.empty());
+    EXPECT_TRUE(step.forces.empty());
+  }
+}
+
+TEST(EdgeStrategy, ZeroGainReproducesNoneExactly) {
+  Scene scene = test::single_fragment(kAtLens);
+  scene.edge.k = 0.0;
+  const Outcome edge = run(scene, "edge");
+  const Outcome none = run(scene, "none");
+  ASSERT_EQ(edge.rec.steps.size(), none.rec.steps.size());
+  for (std::size_t k = 0; k < edge.rec.steps.size(); ++k) {
+    EXPECT_EQ(edge.rec.steps[k].fragments[0].position_m, none.rec.steps[k].fragments[0].position_m);
+  }
+}
+
+TEST(EdgeStrategy, AccelerationCapHolds) {
+  Scene scene = test::single_fragment(kAtLens);
+  scene.edge.k = 1e9;
+  scene.edge.a_max_mps2 = 50.0;
+  const Outcome o = run(scene, "edge");
+  const double mass_kg = 600.0 * 0.1 * 0.1 * 0.1;
+  for (const auto& step : o.rec.steps) {
+    for (const AppliedForce& f : step.forces)
+      EXPECT_LE(f.force_N.norm(), mass_kg * 50.0 * (1 + 1e-12));
+  }
+}
+
+TEST(WallStrategy, IncomingFragmentBouncesOffTheWall) {
+  const Outcome o = run(test::single_fragment(kAtLens), "wall");
+  // It arrives at +10 m/s along z and leaves the wall moving away from the camera.
+  EXPECT_LT(o.rec.steps.back().fragments[0].velocity_mps.z(), 0.0);
+  // The wall's far face is at 0.625 m: the box never comes closer than that, give or take ODE's
+  // contact layer and one step's penetration.
+  double closest_m = 1e9;
+  for (const auto& step : o.rec.steps)
+    closest_m = std::min(closest_m, -step.fragments[0].position_m.z());
+  EXPECT_GT(closest_m, 0.5);
+  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+}
+
+TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
+  // Passes 0.13 m right of the eye: its 0.05 m half-box reaches into the near rectangle (half
+  // width 0.1026 m at 0.1 m) but misses a 0.1 m camera body. Pulling the near plane in to 0.01 m
+  // (half width 0.0103 m) lets it pass uncut.
+  Scene scene = test::single_fragment({0.13, 1.6, -10.0});
+  scene.camera.body_size_m = {0.1, 0.1, 0.1};
+  EXPECT_EQ(run(scene, "none").summary.near_fragments, 1);
+  const Outcome o = run(scene, "near-plane");
+  double min_near = 1.0;
+  for (const auto& step : o.rec.steps) min_near = std::min(min_near, step.near_m);
+  EXPECT_LT(min_near, 0.1);
+  EXPECT_GE(min_near, scene.near_plane.min_near_m);
+  EXPECT_EQ(o.rec.steps.front().near_m, 0.1);
+  EXPECT_EQ(o.rec.steps.back().near_m, 0.1);  // it has flown past
+  EXPECT_EQ(o.summary.near_fragments, 0);
+}
+
+TEST(NearPlaneStrategy, DepthStep) {
+  // z^2 / (n 2^b): 10 m with the near plane at 0.1 m and 24 bits.
+  EXPECT_NEAR(NearPlaneStrategy::depth_step_m(10.0, 0.1, 24), 100.0 / (0.1 * 16777216.0), 1e-15);
+}
+
+TEST(DeflectAllStrategy, PushesApproachingFragmentsAwayFromTheAxis) {
+  const Outcome right = run(test::single_fragment({0.5, 1.6, -5.0}), "deflect-all");
+  int pushes = 0;
+  for (const auto& step : right.rec.steps) {
+    for (const AppliedForce& f : step.forces) {
+      ++pushes;
+      EXPECT_GT(f.force_N.x(), 0.0);  // right of the axis: pushed further right
+      EXPECT_NEAR(f.force_N.y(), 0.0, 1e-12);
+    }
+  }
+  EXPECT_GT(pushes, 0);
+  // Out of range (6 m) at the start: no push in the first step.
+  const Outcome far = run(test::single_fragment({0.5, 1.6, -10.0}), "deflect-all");
+  EXPECT_TRUE(far.rec.steps[1].forces.empty());
+}
+
+TEST(DeflectAllStrategy, RecedingFragmentIsLeftAlone) {
+  const Outcome o = run(test::single_fragment({0.5, 1.6, -3.0}, -10.0), "deflect-all");
+  for (const auto& step : o.rec.steps) EXPECT_TRUE(step.forces.empty());
+}
+
+TEST(Registry, UnknownNameAndBadParameterAreNamed) {
+  Scene scene;
+  try {
+    make_strategy("magic", scene);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("magic"), std::string::npos);
+  }
+  scene.edge.k = -1.0;
+  try {
+    make_strategy("edge", scene);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("edge.k = -1"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// Thrown down and toward the camera from 3 m up, 6 m ahead: at t = 0 its path comes down through
+// the camera's height after 0.2 s, 4.8 m away, so it is no candidate (ball radius 0.2 s * 1 m/s
+// + 0.27 m). It bounces off the ground 3.6 m ahead (no friction: it keeps its 6 m/s toward the
+// camera) and rises to 0.74 m, so for a while its path enters the reachable ball again.
+Scene bouncing_fragment(Replan replan) {
+  Scene s = test::single_fragment({0.03, 3.0, -6.0}, 6.0 * std::sqrt(2.0));
+  s.explosion.offset_m = {0.0, 1.0, -1.0};  // push down and toward the camera
+  s.sim.gravity_mps2 = {0.0, -9.81, 0.0};
+  s.ground.enabled = true;
+  s.ground.restitution = 0.5;
+  s.ground.friction = 0.0;  // keeps its speed toward the camera through the bounce
+  s.sim.duration_s = 2.0;
+  s.edge.replan = replan;
+  return s;
+}
+
+int candidate_steps(const Scene& scene) {
+  auto s = make_strategy("edge", scene);
+  test::Recorder rec;
+  const std::array<RunObserver*, 1> obs{&rec};
+  simulate(scene, *s, obs);
+  int n = 0;
+  for (const auto& step : rec.steps) n += static_cast<int>(step.candidates.size());
+  EXPECT_TRUE(rec.steps[1].candidates.empty()) << "a candidate at t = 0";
+  return n;
+}
+
+TEST(EdgeStrategy, ReplanNeverIgnoresTheBounceContactAndAlwaysSeeIt) {
+  EXPECT_EQ(candidate_steps(bouncing_fragment(Replan::kNever)), 0);
+  EXPECT_GT(candidate_steps(bouncing_fragment(Replan::kContact)), 0);
+  EXPECT_GT(candidate_steps(bouncing_fragment(Replan::kAlways)), 0);
+}
+
+}  // namespace
+}  // namespace fragsim
