@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "strategies/near_plane_strategy.hpp"
+#include "geometry/depth_buffer.hpp"
 
 namespace fragsim {
 
@@ -47,9 +47,8 @@ void StrategyActivityMetric::fill(RunSummary& s) const {
   s.max_accel_mps2 = max_accel_mps2_;
   s.wall_contacts = wall_contacts_;
   s.min_near_m = near_m_.empty() ? 0.0 : *std::min_element(near_m_.begin(), near_m_.end());
-  s.depth_step_m = s.min_near_m > 0.0
-                       ? NearPlaneStrategy::depth_step_m(ref_distance_m_, s.min_near_m, depth_bits_)
-                       : 0.0;
+  s.depth_step_m =
+      s.min_near_m > 0.0 ? depth_step_m(ref_distance_m_, s.min_near_m, depth_bits_) : 0.0;
 }
 
 }  // namespace fragsim

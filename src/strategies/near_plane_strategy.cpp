@@ -5,10 +5,6 @@
 
 namespace fragsim {
 
-double NearPlaneStrategy::depth_step_m(double z_m, double near_m, int bits) {
-  return z_m * z_m / (near_m * std::ldexp(1.0, bits));
-}
-
 void NearPlaneStrategy::step(const StepContext& ctx, StepOutput& out) {
   // The near plane chosen now is the one the next frame is drawn with: look at where the
   // fragments and the camera will be after this step (semi-implicit Euler, as the physics does).

@@ -7,23 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <random>
 #include <vector>
 
+#include "support/test_scenes.hpp"
+
 namespace fragsim {
 namespace {
 
-CameraPose square_camera(double near_m = 0.1) {
-  CameraPose cam;  // eye at the origin, right +x, up +y, forward -z
-  cam.fovy_deg = 90.0;
-  cam.aspect = 1.0;
-  cam.near_m = near_m;
-  return cam;
-}
+using test::square_camera;
 
 MetricsDef grid(int width_px, double central_share = 0.5) {
   MetricsDef def;
@@ -338,34 +332,6 @@ TEST(OcclusionMetric, MatchesRayCastingReference) {
   EXPECT_GT(covered_px, 20 * boxes);  // and is not mostly empty screens
   // Only a pixel centre within rounding of a hull edge could disagree.
   EXPECT_LE(mismatches, 2) << "over " << boxes << " boxes";
-}
-
-TEST(OcclusionMetric, TimingOfOneStepWith1728Fragments) {
-  // The default scene's object (12^3 cubes of 0.1 m around (0, 1.6, -8)) scattered as after an
-  // explosion aimed at the camera, seen on the default 160 x 90 grid. Printed, never asserted.
-  std::mt19937 rng(11);
-  std::vector<FragmentState> frags;
-  for (int i = 0; i < 1728; ++i) {
-    const Eigen::Vector3d c = draw3(rng, -1.0, 1.0).cwiseProduct(Eigen::Vector3d(3.0, 2.0, 4.0)) +
-                              Eigen::Vector3d(0.0, 1.6, -4.5);
-    frags.push_back(box(c, Eigen::Vector3d::Constant(0.049), draw_rotation(rng)));
-  }
-  CameraPose cam;
-  cam.eye_m = Eigen::Vector3d(0, 1.6, 0);
-  const int steps = 60;
-  OcclusionMetric m(MetricsDef{});
-  m.begin(run_info(1728, steps), snapshot(0, cam, frags));
-  const auto t0 = std::chrono::steady_clock::now();
-  for (int step = 1; step <= steps; ++step) m.observe(snapshot(step, cam, frags));
-  const double total_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  RunSummary s;
-  m.fill(s);
-  std::printf(
-      "[   info   ] occlusion: 1728 boxes on %dx%d: %.1f us per observe(), %.1f ms for %d "
-      "steps (share %.3f)\n",
-      m.width_px(), m.height_px(), 1e6 * total_s / steps, 1e3 * total_s, steps, s.occlusion_mean);
-  EXPECT_GT(s.occlusion_mean, 0.0);
 }
 
 }  // namespace

@@ -30,17 +30,11 @@
 namespace fragsim {
 namespace {
 
+using test::square_camera;
+
 namespace fs = std::filesystem;
 
 constexpr int kSize = 200;  // pixels; 100 pixels per unit of x / z
-
-CameraPose square_camera(double near_m = 0.1) {
-  CameraPose cam;  // eye at the origin, right +x, up +y, forward -z
-  cam.fovy_deg = 90.0;
-  cam.aspect = 1.0;
-  cam.near_m = near_m;
-  return cam;
-}
 
 // A scene without ground, so the background is only sky.
 Scene sky_scene() {

@@ -16,15 +16,10 @@
 namespace fragsim {
 namespace {
 
-struct Outcome {
-  test::Recorder rec;
-  RunSummary summary;
-};
+using Outcome = test::RecordedRun;
 
 Outcome run(const Scene& scene, const std::string& strategy) {
-  Outcome o;
-  o.summary = evaluate(scene, strategy, {nullptr, nullptr, false, {&o.rec}}).summary;
-  return o;
+  return test::run_recorded(scene, strategy);
 }
 
 // Where the fragment's centre is, above the eye, when it passes the eye's depth (z = 0).

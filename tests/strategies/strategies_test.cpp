@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/depth_buffer.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
@@ -14,19 +15,10 @@
 namespace fragsim {
 namespace {
 
-struct Outcome {
-  test::Recorder rec;
-  RunSummary summary;
-};
+using Outcome = test::RecordedRun;
 
 Outcome run(const Scene& scene, const std::string& strategy) {
-  Outcome o;
-  auto s = make_strategy(strategy, scene);
-  NearPlaneMetric near;
-  const std::array<RunObserver*, 2> observers{&o.rec, &near};
-  simulate(scene, *s, observers);
-  near.fill(o.summary);
-  return o;
+  return test::run_recorded(scene, strategy);
 }
 
 // 10 m ahead, 3 cm right of and 2 cm above the view axis, flying straight at the lens.
@@ -150,7 +142,7 @@ TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
 
 TEST(NearPlaneStrategy, DepthStep) {
   // z^2 / (n 2^b): 10 m with the near plane at 0.1 m and 24 bits.
-  EXPECT_NEAR(NearPlaneStrategy::depth_step_m(10.0, 0.1, 24), 100.0 / (0.1 * 16777216.0), 1e-15);
+  EXPECT_NEAR(depth_step_m(10.0, 0.1, 24), 100.0 / (0.1 * 16777216.0), 1e-15);
 }
 
 TEST(DeflectAllStrategy, PushesApproachingFragmentsAwayFromTheAxis) {

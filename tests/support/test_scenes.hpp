@@ -1,8 +1,13 @@
 #pragma once
-// Small hand-made scenes for the tests: one fragment fired along a known line at a still camera.
+// Small hand-made scenes and cameras for the tests: one fragment fired along a known line at a
+// still camera, a square 90-degree camera, and a recorder of every step.
 
 #include <vector>
 
+#include <string>
+
+#include "experiments/evaluation.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 
@@ -60,5 +65,27 @@ class Recorder final : public RunObserver {
                      s.camera.near_m});
   }
 };
+
+// A 90-degree, square camera with its eye at the origin, right +x, up +y, forward -z: a point at
+// depth z and lateral offset x has NDC x / z, so expected screen positions are worked by hand.
+inline CameraPose square_camera(double near_m = 0.1) {
+  CameraPose cam;
+  cam.fovy_deg = 90.0;
+  cam.aspect = 1.0;
+  cam.near_m = near_m;
+  return cam;
+}
+
+// One evaluated run of `strategy` on `scene`: every step as recorded, and the run's summary.
+struct RecordedRun {
+  Recorder rec;
+  RunSummary summary;
+};
+
+inline RecordedRun run_recorded(const Scene& scene, const std::string& strategy) {
+  RecordedRun o;
+  o.summary = evaluate(scene, strategy, {nullptr, nullptr, false, {&o.rec}}).summary;
+  return o;
+}
 
 }  // namespace fragsim::test
