@@ -23,6 +23,7 @@
 #include "report/csv_export.hpp"
 #include "report/html_report.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace po = boost::program_options;
 using namespace fragsim;
@@ -201,6 +202,7 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   remove_temporaries_on_interrupt();
+  arm_test_signal_from_environment();
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return cmd_run(args);
