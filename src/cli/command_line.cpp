@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "experiments/process_runner.hpp"
 #include "sim/scene_file.hpp"
 
 namespace fragsim::cli {
@@ -44,6 +45,15 @@ std::vector<std::string> split_list(const std::string& text) {
     if (!item.empty()) out.push_back(item);
   }
   return out;
+}
+
+int jobs_option(const po::variables_map& options) {
+  if (!options.count("jobs")) return online_cpus();
+  try {
+    return parse_jobs(options["jobs"].as<std::string>());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 }
 
 }  // namespace fragsim::cli

@@ -28,4 +28,8 @@ ParsedCommand parse_command(const std::string& command, const std::vector<std::s
 
 std::vector<std::string> split_list(const std::string& text);
 
+// The worker processes --jobs asks for (a text option, so that every bad value gets the same one
+// line), or one per online CPU without it. Throws UsageError naming --jobs.
+int jobs_option(const boost::program_options::variables_map& options);
+
 }  // namespace fragsim::cli

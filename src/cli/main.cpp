@@ -1,6 +1,7 @@
 // fragsim: the command line. It parses options into a scene, runs, prints; every failure becomes
 // one line on stderr and a non-zero exit (2 for usage errors, 1 for failures while running).
 
+#include <csignal>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -22,6 +23,7 @@
 #include "report/csv_export.hpp"
 #include "report/html_report.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
 
 namespace po = boost::program_options;
 using namespace fragsim;
@@ -51,7 +53,7 @@ void add_output_options(po::options_description& own) {
       "(DIR/sheet.png), scene settings (runs the strategies in this process)")(
       "force", "overwrite the files of an existing, non-empty DIR")(
       "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
-      "jobs", po::value<int>()->value_name("J"),
+      "jobs", po::value<std::string>()->value_name("J"),
       "worker processes for the strategies (default: one per core; --trajectories, --sheet or "
       "--report run in one)");
   cli::add_sheet_options(own);
@@ -97,13 +99,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
     traj_file.emplace((std::filesystem::path(*dir) / "trajectories.csv").string());
     traj.emplace(traj_file->out());
   }
-  int jobs = online_cpus();
-  if (p.options.count("jobs")) {
-    jobs = p.options["jobs"].as<int>();
-    if (jobs < 1 || jobs > 1024) {
-      throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
-    }
-  }
+  const int jobs = cli::jobs_option(p.options);
   // The report's contact sheet draws from the same recorder as --sheet (steps may repeat).
   std::vector<int> recorded_steps = sheet ? sheet->steps : std::vector<int>{};
   if (report_dir) {
@@ -206,6 +202,7 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   remove_temporaries_on_interrupt();
+  arm_test_signal_from_environment();
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return cmd_run(args);
@@ -220,6 +217,11 @@ int main(int argc, char** argv) {
     }
     std::cerr << "fragsim: unknown command '" << command << "'\n" << kUsage;
     return kUsageError;
+  } catch (const Interrupted& e) {
+    // Unwound to here, every temporary file is gone: now die of the signal as if never caught.
+    std::signal(e.signal(), SIG_DFL);
+    std::raise(e.signal());
+    return 128 + e.signal();
   } catch (const UsageError& e) {
     std::cerr << "fragsim " << command << ": " << e.what() << '\n';
     return kUsageError;

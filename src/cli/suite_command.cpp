@@ -10,7 +10,6 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
-#include "experiments/process_runner.hpp"
 #include "experiments/suite.hpp"
 #include "io/atomic_file.hpp"
 
@@ -80,7 +79,7 @@ int cmd_suite(const std::vector<std::string>& args) {
       "only the first N runs of the selection, in battery order (a CI slice)")(
       "scene-dir", po::value<std::string>()->default_value("data/scenes")->value_name("DIR"),
       "where the battery's scene files are")(
-      "jobs", po::value<int>()->value_name("J"),
+      "jobs", po::value<std::string>()->value_name("J"),
       "worker processes (default: the number of online CPUs)")(
       "out", po::value<std::string>()->value_name("FILE"),
       "write the tidy CSV, one row per run and strategy")("force", "overwrite an existing FILE")(
@@ -131,13 +130,7 @@ int cmd_suite(const std::vector<std::string>& args) {
                                                                           : "--seeds: ";
     throw UsageError(option + what);
   }
-  int jobs = online_cpus();
-  if (vm.count("jobs")) {
-    jobs = vm["jobs"].as<int>();
-    if (jobs < 1 || jobs > 1024) {
-      throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
-    }
-  }
+  const int jobs = jobs_option(vm);
   std::optional<std::string> out_path;
   if (vm.count("out")) {
     out_path = vm["out"].as<std::string>();

@@ -1,19 +1,11 @@
 #include "cli/sweep_command.hpp"
 
-#include <poll.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <set>
-#include <sstream>
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
@@ -31,42 +23,12 @@ namespace {
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
 
-// Everything a worker needs, fixed before the first fork.
-struct SweepPlan {
-  std::string scene_text;               // the --scene file's text, read once
-  std::string origin;                   // its path, for messages
-  std::vector<SceneOverride> base;      // the --section.key options
-  std::vector<SweepAxis> axes;          // the --vary options
-  std::vector<SweepJob> jobs;           // in output order
-  std::vector<std::string> strategies;  // in --strategies order
-  bool occlusion = true;
+// The plan and, beside it, what only the command needs.
+struct SweepCommandPlan {
+  SweepPlan sweep;
   std::string out;
-  std::size_t workers = 1;
+  int jobs = 1;
 };
-
-std::vector<SceneOverride> overrides_for(const SweepPlan& plan,
-                                         const std::vector<std::size_t>& value_index,
-                                         std::uint64_t seed) {
-  std::vector<SceneOverride> o = plan.base;
-  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
-    o.push_back({plan.axes[k].key, plan.axes[k].values[value_index[k]]});
-  }
-  o.push_back({"simulation.seed", std::to_string(seed)});
-  return o;
-}
-
-// "a=1, b=2": one combination of the varied values, for messages.
-std::string describe(const SweepPlan& plan, const std::vector<std::size_t>& value_index) {
-  std::string s;
-  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
-    s += (k > 0 ? ", " : "") + plan.axes[k].key + "=" + plan.axes[k].values[value_index[k]];
-  }
-  return s;
-}
-
-std::string describe(const SweepPlan& plan, const SweepJob& job) {
-  return describe(plan, job.value_index) + ", seed " + std::to_string(job.seed);
-}
 
 // SceneError messages for an override start with "--KEY: "; the caller names --vary instead.
 std::string without_option_prefix(const std::string& message, const std::string& key) {
@@ -103,8 +65,9 @@ std::string join(const std::vector<std::string>& cells) {
 
 // ---- Parsing and validation: everything that can be wrong is found here, before any fork. ----
 
-SweepPlan plan_sweep(const ParsedCommand& p) {
-  SweepPlan plan;
+SweepCommandPlan plan_sweep(const ParsedCommand& p) {
+  SweepCommandPlan command;
+  SweepPlan& plan = command.sweep;
   if (!p.options.count("vary")) throw UsageError("--vary: at least one KEY=SPEC is needed");
   std::set<std::string> varied;
   for (const std::string& text : p.options["vary"].as<std::vector<std::string>>()) {
@@ -163,19 +126,15 @@ SweepPlan plan_sweep(const ParsedCommand& p) {
   plan.occlusion = p.options.count("no-occlusion") == 0;
 
   if (!p.options.count("out")) throw UsageError("--out: the output file is needed");
-  plan.out = p.options["out"].as<std::string>();
-  if (plan.out.empty()) throw UsageError("--out: empty file name");
+  command.out = p.options["out"].as<std::string>();
+  if (command.out.empty()) throw UsageError("--out: empty file name");
   std::error_code ec;
-  if (fs::is_directory(plan.out, ec)) throw UsageError("--out " + plan.out + ": is a folder");
-  if (fs::exists(plan.out, ec) && !p.options.count("force")) {
-    throw UsageError("--out " + plan.out + ": exists (use --force to overwrite)");
+  if (fs::is_directory(command.out, ec)) throw UsageError("--out " + command.out + ": is a folder");
+  if (fs::exists(command.out, ec) && !p.options.count("force")) {
+    throw UsageError("--out " + command.out + ": exists (use --force to overwrite)");
   }
 
-  long jobs = p.options.count("jobs") ? p.options["jobs"].as<int>() : sysconf(_SC_NPROCESSORS_ONLN);
-  if (p.options.count("jobs") && (jobs < 1 || jobs > 1024)) {
-    throw UsageError("--jobs " + std::to_string(jobs) + ": must be in [1, 1024]");
-  }
-  if (jobs < 1) jobs = 1;  // sysconf failed
+  command.jobs = jobs_option(p.options);
 
   // The scene file's text, read once: every job's scene is parsed from it with its overrides.
   if (p.options.count("scene")) {
@@ -198,7 +157,6 @@ SweepPlan plan_sweep(const ParsedCommand& p) {
   } catch (const SweepError& e) {
     throw UsageError(std::string("--vary: ") + e.what());
   }
-  plan.workers = std::min(static_cast<std::size_t>(jobs), plan.jobs.size());
 
   // Each value alone first, so a bad value is reported against its own --vary option.
   for (std::size_t k = 0; k < plan.axes.size(); ++k) {
@@ -219,317 +177,46 @@ SweepPlan plan_sweep(const ParsedCommand& p) {
   for (const auto& c : combos) {
     try {
       const Scene scene =
-          parse_scene(plan.scene_text, plan.origin, overrides_for(plan, c, seeds.front()));
+          parse_scene(plan.scene_text, plan.origin, sweep_overrides(plan, c, seeds.front()));
       for (const std::string& n : plan.strategies) make_strategy(n, scene);
     } catch (const SceneError& e) {
-      throw UsageError("--vary " + describe(plan, c) + ": " + e.what());
+      throw UsageError("--vary " + describe_combination(plan, c) + ": " + e.what());
     } catch (const std::invalid_argument& e) {
-      throw UsageError("--vary " + describe(plan, c) + ": " + e.what());
+      throw UsageError("--vary " + describe_combination(plan, c) + ": " + e.what());
     }
   }
-  return plan;
+  return command;
 }
 
-// ---- Workers: separate processes, because ODE (built without per-thread collision storage)
-// must never step two worlds from two threads of one process. ----
-
-// Runs jobs w, w + J, ... and appends "job,row" lines to `path`; reports each finished job on
-// `fd` as "done J\n", or "error J message\n" before exiting with status 1. Never returns: the
-// parent's objects in this copy of the process must not be destroyed twice.
-[[noreturn]] void run_worker(const SweepPlan& plan, std::size_t w, const std::string& path,
-                             int fd) {
-  std::size_t current = w;
-  auto report = [fd](const std::string& line) {
-    // A pipe write this short is atomic; a failure means the parent is gone.
-    if (::write(fd, line.data(), line.size()) != static_cast<ssize_t>(line.size())) ::_exit(1);
-  };
-  try {
-    std::size_t seed_column = 0;
-    sweep_columns(plan, seed_column);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error(path + ": cannot write (" + std::strerror(errno) + ")");
-    for (; current < plan.jobs.size(); current += plan.workers) {
-      const SweepJob& job = plan.jobs[current];
-      const Scene scene =
-          parse_scene(plan.scene_text, plan.origin, overrides_for(plan, job.value_index, job.seed));
-      const std::vector<Evaluation> runs = compare(scene, plan.strategies, plan.occlusion);
-      std::string text;
-      for (const Evaluation& e : runs) {
-        std::vector<std::string> cells;
-        for (std::size_t k = 0; k < plan.axes.size(); ++k) {
-          cells.push_back(plan.axes[k].values[job.value_index[k]]);
-        }
-        cells.push_back(std::to_string(job.seed));
-        const std::vector<std::string> summary = summary_csv_cells(scene, e.summary);
-        for (std::size_t i = 0; i < summary.size(); ++i) {
-          if (i != seed_column) cells.push_back(summary[i]);
-        }
-        text += std::to_string(current) + "," + join(cells) + "\n";
+// The CSV: a header, then per job (in plan order) one row per strategy.
+std::string sweep_csv(const SweepPlan& plan, const std::vector<std::vector<Evaluation>>& results) {
+  std::size_t seed_column = 0;
+  std::string csv = join(sweep_columns(plan, seed_column)) + "\n";
+  for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
+    const SweepJob& job = plan.jobs[j];
+    // Parsed again here for the rows' scene-derived cells (the z-fighting flag): it is the
+    // scene the worker ran.
+    const Scene scene =
+        parse_scene(plan.scene_text, plan.origin, sweep_overrides(plan, job.value_index, job.seed));
+    for (const Evaluation& e : results[j]) {
+      std::vector<std::string> cells;
+      for (std::size_t k = 0; k < plan.axes.size(); ++k) {
+        cells.push_back(plan.axes[k].values[job.value_index[k]]);
       }
-      out << text;
-      out.flush();
-      if (!out) throw std::runtime_error(path + ": write failed (disk full?)");
-      report("done " + std::to_string(current) + "\n");
-    }
-    out.close();
-    if (out.fail()) throw std::runtime_error(path + ": write failed (disk full?)");
-  } catch (const std::exception& e) {
-    std::string what = e.what();
-    for (char& c : what) {
-      if (c == '\n') c = ' ';
-    }
-    report("error " + std::to_string(current) + " " + what.substr(0, 3000) + "\n");
-    ::_exit(1);
-  } catch (...) {
-    report("error " + std::to_string(current) + " unknown exception\n");
-    ::_exit(1);
-  }
-  ::_exit(0);
-}
-
-// SIGINT, SIGTERM and SIGHUP only set a flag while the sweep runs, so the parent can stop the
-// workers and remove the temporary files before it dies of the same signal.
-volatile std::sig_atomic_t g_signal = 0;
-void note_signal(int signo) {
-  g_signal = signo;
-}
-
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
-
-class SignalGuard {
- public:
-  SignalGuard() {
-    struct sigaction sa {};
-    sa.sa_handler = note_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = 0;  // no SA_RESTART: poll() returns EINTR and the loop sees the flag
-    for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
-      sigaction(kStopSignals[i], nullptr, &old_[i]);
-      // A signal ignored on entry (nohup, a background job) stays ignored, here and in workers.
-      if (old_[i].sa_handler != SIG_IGN) sigaction(kStopSignals[i], &sa, nullptr);
-    }
-  }
-  ~SignalGuard() { restore(); }
-  SignalGuard(const SignalGuard&) = delete;
-  SignalGuard& operator=(const SignalGuard&) = delete;
-
-  // The dispositions found on entry; also what a worker runs with.
-  void restore() const {
-    for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
-      sigaction(kStopSignals[i], &old_[i], nullptr);
-    }
-  }
-
- private:
-  struct sigaction old_[std::size(kStopSignals)]{};
-};
-
-struct Interrupted {
-  int signo;
-};
-
-void check_signal() {
-  if (g_signal != 0) throw Interrupted{g_signal};
-}
-
-// The workers' temporary files, removed whatever happens (the parent's copy only).
-class TempFiles {
- public:
-  ~TempFiles() {
-    for (const std::string& p : paths_) std::remove(p.c_str());
-  }
-  void add(std::string path) { paths_.push_back(std::move(path)); }
-  const std::string& operator[](std::size_t i) const { return paths_[i]; }
-
- private:
-  std::vector<std::string> paths_;
-};
-
-struct Worker {
-  pid_t pid = -1;
-  int fd = -1;  // read end of its report pipe
-  std::string pending;
-  std::size_t next_job = 0;  // the job it runs now, in its share
-  std::string error;         // its "error" report, if any
-  bool running = false;
-};
-
-// The running workers; on any early exit (a failure, an exception, a signal) the rest are killed
-// and reaped so none outlives the sweep or writes after its files are removed.
-class WorkerSet {
- public:
-  ~WorkerSet() { stop(); }
-  void stop() {
-    for (Worker& w : workers) {
-      if (w.running) ::kill(w.pid, SIGTERM);
-    }
-    for (Worker& w : workers) {
-      if (w.running) {
-        while (::waitpid(w.pid, nullptr, 0) < 0 && errno == EINTR) {
-        }
-        w.running = false;
+      cells.push_back(std::to_string(job.seed));
+      const std::vector<std::string> summary = summary_csv_cells(scene, e.summary);
+      for (std::size_t i = 0; i < summary.size(); ++i) {
+        if (i != seed_column) cells.push_back(summary[i]);
       }
-      if (w.fd >= 0) ::close(w.fd);
-      w.fd = -1;
+      csv += join(cells) + "\n";
     }
   }
-  std::vector<Worker> workers;
-};
-
-std::string exit_text(int status) {
-  if (WIFSIGNALED(status)) {
-    return "was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
-           strsignal(WTERMSIG(status)) + ")";
-  }
-  return "exited with status " + std::to_string(WEXITSTATUS(status));
+  return csv;
 }
 
 void show_progress(std::size_t done, std::size_t total) {
   std::fprintf(stderr, "\r sweep: %zu/%zu runs", done, total);
   std::fflush(stderr);
-}
-
-// Forks the workers, follows their reports and returns the merged CSV text. Throws
-// std::runtime_error naming the failed job, or Interrupted.
-std::string run_workers(const SweepPlan& plan, const TempFiles& temp, const SignalGuard& signals) {
-  const bool progress = ::isatty(STDERR_FILENO) == 1;
-  std::cout.flush();  // buffered output would be written again by every child at exit
-  std::cerr.flush();
-  std::fflush(nullptr);
-  WorkerSet set;
-  sigset_t block, previous;
-  sigemptyset(&block);
-  for (int s : kStopSignals) sigaddset(&block, s);
-  for (std::size_t w = 0; w < plan.workers; ++w) {
-    int fds[2];
-    if (::pipe(fds) != 0) throw std::runtime_error(std::string("pipe: ") + std::strerror(errno));
-    // Stop signals wait until the child has its own dispositions back (a worker hit by Ctrl-C
-    // dies at once) and until the parent has recorded the child, so it is always stopped.
-    sigprocmask(SIG_BLOCK, &block, &previous);
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-      signals.restore();
-      sigprocmask(SIG_SETMASK, &previous, nullptr);
-      ::close(fds[0]);
-      for (const Worker& other : set.workers) ::close(other.fd);
-      run_worker(plan, w, temp[w], fds[1]);
-    }
-    const int fork_errno = errno;
-    ::close(fds[1]);
-    if (pid < 0) {
-      ::close(fds[0]);
-      sigprocmask(SIG_SETMASK, &previous, nullptr);
-      throw std::runtime_error(std::string("cannot start a worker process: ") +
-                               std::strerror(fork_errno));
-    }
-    Worker worker;
-    worker.pid = pid;
-    worker.fd = fds[0];
-    worker.next_job = w;
-    worker.running = true;
-    set.workers.push_back(worker);
-    sigprocmask(SIG_SETMASK, &previous, nullptr);
-  }
-
-  std::size_t done = 0;
-  if (progress) show_progress(done, plan.jobs.size());
-  auto fail = [&plan](const Worker& w, const std::string& what) {
-    const std::string job = w.next_job < plan.jobs.size()
-                                ? " on job " + std::to_string(w.next_job + 1) + " (" +
-                                      describe(plan, plan.jobs[w.next_job]) + ")"
-                                : "";
-    throw std::runtime_error("worker " + std::to_string(w.pid) + job + ": " + what);
-  };
-  std::size_t running = set.workers.size();
-  while (running > 0) {
-    check_signal();
-    std::vector<pollfd> polled;
-    std::vector<Worker*> who;
-    for (Worker& w : set.workers) {
-      if (w.running) {
-        polled.push_back({w.fd, POLLIN, 0});
-        who.push_back(&w);
-      }
-    }
-    if (::poll(polled.data(), polled.size(), -1) < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(std::string("poll: ") + std::strerror(errno));
-    }
-    for (std::size_t i = 0; i < polled.size(); ++i) {
-      if (polled[i].revents == 0) continue;
-      Worker& w = *who[i];
-      char buf[4096];
-      const ssize_t n = ::read(w.fd, buf, sizeof buf);
-      if (n < 0) {
-        if (errno == EINTR || errno == EAGAIN) continue;
-        throw std::runtime_error(std::string("read from a worker: ") + std::strerror(errno));
-      }
-      if (n > 0) {
-        w.pending.append(buf, static_cast<std::size_t>(n));
-        for (auto nl = w.pending.find('\n'); nl != std::string::npos; nl = w.pending.find('\n')) {
-          const std::string line = w.pending.substr(0, nl);
-          w.pending.erase(0, nl + 1);
-          if (line.rfind("done ", 0) == 0) {
-            ++done;
-            w.next_job += plan.workers;
-            if (progress) show_progress(done, plan.jobs.size());
-          } else if (line.rfind("error ", 0) == 0) {
-            const auto space = line.find(' ', 6);
-            w.error = space == std::string::npos ? line.substr(6) : line.substr(space + 1);
-          }
-        }
-        continue;
-      }
-      // End of file: the worker has exited (or is about to); its status says how.
-      int status = 0;
-      while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
-      }
-      w.running = false;
-      --running;
-      ::close(w.fd);
-      w.fd = -1;
-      // Workers hit by the same Ctrl-C are not a failure to report: the sweep was interrupted.
-      check_signal();
-      if (progress && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) std::fputc('\n', stderr);
-      if (!w.error.empty()) fail(w, w.error);
-      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) fail(w, exit_text(status));
-      if (w.next_job < plan.jobs.size()) fail(w, "stopped before its last job");
-    }
-  }
-  if (progress) std::fputc('\n', stderr);
-  check_signal();
-
-  // Merge in job order: the file is the same whatever the number of workers.
-  std::vector<std::string> rows(plan.jobs.size());
-  std::vector<std::size_t> count(plan.jobs.size(), 0);
-  for (std::size_t w = 0; w < plan.workers; ++w) {
-    std::ifstream in(temp[w], std::ios::binary);
-    if (!in) throw std::runtime_error(temp[w] + ": cannot read a worker's rows");
-    std::string line;
-    while (std::getline(in, line)) {
-      const auto comma = line.find(',');
-      std::size_t job = plan.jobs.size();
-      try {
-        job = std::stoul(line.substr(0, comma));
-      } catch (const std::exception&) {
-      }
-      if (comma == std::string::npos || job >= plan.jobs.size() || job % plan.workers != w) {
-        throw std::runtime_error(temp[w] + ": malformed worker row");
-      }
-      rows[job].append(line, comma + 1).push_back('\n');
-      ++count[job];
-    }
-  }
-  std::size_t seed_column = 0;
-  std::string csv = join(sweep_columns(plan, seed_column)) + "\n";
-  for (std::size_t j = 0; j < rows.size(); ++j) {
-    if (count[j] != plan.strategies.size()) {
-      throw std::runtime_error("job " + std::to_string(j + 1) + " (" +
-                               describe(plan, plan.jobs[j]) + "): rows missing in worker output");
-    }
-    csv += rows[j];
-  }
-  return csv;
 }
 
 // ---- The single-key summary. ----
@@ -581,47 +268,38 @@ int cmd_sweep(const std::vector<std::string>& args) {
       "seed-list", po::value<std::string>()->value_name("a,b,c"), "run these seeds")(
       "strategies", po::value<std::string>()->default_value(all_names),
       "comma-separated strategies to compare on every combination")(
-      "jobs", po::value<int>()->value_name("J"),
+      "jobs", po::value<std::string>()->value_name("J"),
       "worker processes (default: the number of online CPUs)")(
       "out", po::value<std::string>()->value_name("FILE"), "the CSV file to write")(
       "force", "overwrite an existing FILE")(
       "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)");
   const ParsedCommand p = parse_command("sweep", args, own);
   if (p.help_shown) return 0;
-  const SweepPlan plan = plan_sweep(p);
+  const SweepCommandPlan command = plan_sweep(p);
+  const SweepPlan& plan = command.sweep;
+  // Fails early, as a usage error, when the file cannot be written: a probe through the same
+  // temporary-file-and-rename path, removed again before the workers are forked.
+  try {
+    const AtomicFile probe(command.out);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(std::string("--out ") + e.what());
+  }
 
-  std::string csv;
-  int signo = 0;
-  {
-    const SignalGuard guard;
-    TempFiles temp;
-    for (std::size_t w = 0; w < plan.workers; ++w) {
-      // Next to the output so the final rename stays on one file system; the pid keeps two
-      // sweeps into the same folder apart.
-      temp.add(plan.out + ".part" + std::to_string(w) + "." + std::to_string(::getpid()));
-      std::ofstream probe(temp[w], std::ios::binary | std::ios::trunc);
-      if (!probe) {
-        throw UsageError("--out " + plan.out + ": cannot write beside it (" + std::strerror(errno) +
-                         ")");
-      }
-    }
-    try {
-      csv = run_workers(plan, temp, guard);
-      AtomicFile file(plan.out);
-      file.out() << csv;
-      check_signal();
-      file.commit();
-    } catch (const Interrupted& i) {
-      signo = i.signo;
-    }
+  const bool progress = ::isatty(STDERR_FILENO) == 1;
+  if (progress) show_progress(0, plan.jobs.size());
+  std::vector<std::vector<Evaluation>> results;
+  try {
+    results = run_sweep(plan, command.jobs, [&](std::size_t done) {
+      if (progress) show_progress(done, plan.jobs.size());
+    });
+  } catch (...) {
+    if (progress) std::fputc('\n', stderr);  // the error's line after the progress line, not on it
+    throw;
   }
-  if (signo != 0) {
-    // Die of the signal as if it had not been caught, now that nothing is left behind.
-    std::signal(signo, SIG_DFL);
-    std::raise(signo);
-    return 128 + signo;
-  }
-  std::cout << "wrote " << plan.out << ": " << plan.jobs.size() * plan.strategies.size()
+  if (progress) std::fputc('\n', stderr);
+  const std::string csv = sweep_csv(plan, results);
+  write_file_atomically(command.out, csv);
+  std::cout << "wrote " << command.out << ": " << plan.jobs.size() * plan.strategies.size()
             << " rows (" << plan.jobs.size() << " runs x " << plan.strategies.size()
             << " strategies)\n";
   if (plan.axes.size() == 1) print_single_key_tables(plan, csv, std::cout);

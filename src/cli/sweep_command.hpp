@@ -7,9 +7,10 @@
 
 namespace fragsim::cli {
 
-// Parses and validates everything, forks the workers, merges their rows into --out and, when one
-// key is varied, prints the per-value tables. Returns the exit status; throws UsageError for bad
-// input (before any simulation runs) and std::runtime_error when a worker fails.
+// Parses and validates everything, runs the jobs (experiments/sweep.hpp's run_sweep), writes
+// their rows into --out and, when one key is varied, prints the per-value tables. Returns the
+// exit status; throws UsageError for bad input (before any simulation runs), TaskFailed when a
+// job fails and Interrupted on a stop signal.
 int cmd_sweep(const std::vector<std::string>& args);
 
 }  // namespace fragsim::cli

@@ -101,9 +101,12 @@ std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::strin
   }
   // Workers are forked after the reference run, so each inherits the reference trajectories.
   // An extra observer (a trajectory writer streaming into a file) lives in this process only.
+  ProcessRunOptions run;
+  run.jobs = extra ? 1 : jobs;
+  run.describe = [&others](std::size_t i) { return "strategy " + others[i]; };
   const std::vector<std::string> encoded = run_in_processes(
-      others.size(), extra ? 1 : jobs,
-      [&](std::size_t i) { return encode_evaluation(evaluate(scene, others[i], opts)); });
+      others.size(),
+      [&](std::size_t i) { return encode_evaluation(evaluate(scene, others[i], opts)); }, run);
   std::vector<Evaluation> runs;
   std::size_t next = 0;
   for (const std::string& name : strategies) {

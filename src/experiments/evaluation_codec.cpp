@@ -124,4 +124,22 @@ Evaluation decode_evaluation(const std::string& bytes) {
   return e;
 }
 
+std::string encode_evaluations(const std::vector<Evaluation>& evaluations) {
+  Writer w;
+  w.put<std::uint64_t>(evaluations.size());
+  for (const Evaluation& e : evaluations) w.put(encode_evaluation(e));
+  return w.out;
+}
+
+std::vector<Evaluation> decode_evaluations(const std::string& bytes) {
+  Reader r(bytes);
+  std::vector<std::string> each;
+  r.get(each);
+  if (!r.at_end()) throw std::runtime_error("evaluation bytes: trailing data");
+  std::vector<Evaluation> out;
+  out.reserve(each.size());
+  for (const std::string& one : each) out.push_back(decode_evaluation(one));
+  return out;
+}
+
 }  // namespace fragsim

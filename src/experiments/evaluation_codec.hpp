@@ -3,6 +3,7 @@
 // processes come back to the parent as if they had run there.
 
 #include <string>
+#include <vector>
 
 #include "experiments/evaluation.hpp"
 
@@ -11,5 +12,10 @@ namespace fragsim {
 std::string encode_evaluation(const Evaluation& e);
 // Throws std::runtime_error on truncated or malformed bytes.
 Evaluation decode_evaluation(const std::string& bytes);
+
+// Several, length-prefixed: one worker task's evaluations (a sweep job's strategies, a suite
+// run's variants). Throws std::runtime_error like decode_evaluation.
+std::string encode_evaluations(const std::vector<Evaluation>& evaluations);
+std::vector<Evaluation> decode_evaluations(const std::string& bytes);
 
 }  // namespace fragsim

@@ -2,22 +2,94 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
+#include <csignal>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
-#include <stdexcept>
+#include <iostream>
+#include <iterator>
 
 namespace fragsim {
 namespace {
 
-// Frames on a worker's pipe: task index, status (0 ok, 1 error), length, bytes.
+// Frames on a worker's pipe: task index, status (0 ok, 1 the task threw), length, bytes.
 struct FrameHeader {
   std::uint64_t task;
   std::uint64_t status;
   std::uint64_t length;
+};
+
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+volatile std::sig_atomic_t g_stop_signal = 0;
+extern "C" void note_stop_signal(int signo) {
+  g_stop_signal = signo;
+}
+
+// While workers run, the stop signals only set a flag, and are blocked except inside ppoll: a
+// signal then always interrupts the wait (no window between checking the flag and waiting).
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal = 0;
+    sigemptyset(&caught_);
+    struct sigaction sa {};
+    sa.sa_handler = note_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0;
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
+      sigaction(kStopSignals[i], nullptr, &old_[i]);
+      // A signal ignored on entry (nohup, a background job) stays ignored, here and in workers.
+      if (old_[i].sa_handler == SIG_IGN) continue;
+      sigaction(kStopSignals[i], &sa, nullptr);
+      sigaddset(&caught_, kStopSignals[i]);
+    }
+    sigprocmask(SIG_BLOCK, &caught_, &entry_mask_);
+  }
+  // The entry dispositions come back first, so a signal still pending reaches them (fragsim's:
+  // remove temporary files and die) rather than being lost.
+  ~StopSignals() {
+    restore_handlers();
+    sigprocmask(SIG_SETMASK, &entry_mask_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+  // A worker owns no output file, so the default action (die) is right for it, whatever handler
+  // this process had; ignored signals stay ignored.
+  void reset_in_child() const {
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
+      if (old_[i].sa_handler != SIG_IGN) std::signal(kStopSignals[i], SIG_DFL);
+    }
+    sigprocmask(SIG_SETMASK, &entry_mask_, nullptr);
+  }
+
+  const sigset_t& wait_mask() const { return entry_mask_; }
+
+  // The stop signal caught or pending, taking a pending one (0: none).
+  int take() const {
+    if (g_stop_signal != 0) return g_stop_signal;
+    const timespec zero{0, 0};
+    const int signo = sigtimedwait(&caught_, nullptr, &zero);
+    if (signo > 0) g_stop_signal = signo;
+    return signo > 0 ? signo : 0;
+  }
+
+ private:
+  void restore_handlers() const {
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
+      sigaction(kStopSignals[i], &old_[i], nullptr);
+    }
+  }
+  struct sigaction old_[std::size(kStopSignals)]{};
+  sigset_t caught_{};
+  sigset_t entry_mask_{};
 };
 
 bool write_all(int fd, const void* data, std::size_t n) {
@@ -32,10 +104,10 @@ bool write_all(int fd, const void* data, std::size_t n) {
   return true;
 }
 
-[[noreturn]] void worker(int fd, int w, int jobs, std::size_t count,
-                         const std::function<std::string(std::size_t)>& task) {
-  for (std::size_t i = static_cast<std::size_t>(w); i < count;
-       i += static_cast<std::size_t>(jobs)) {
+// Never returns: the parent's objects in this copy of the process must not be destroyed twice.
+[[noreturn]] void worker_main(int fd, std::size_t first, std::size_t stride, std::size_t count,
+                              const std::function<std::string(std::size_t)>& task) {
+  for (std::size_t i = first; i < count; i += stride) {
     std::string out;
     std::uint64_t status = 0;
     try {
@@ -58,132 +130,260 @@ bool write_all(int fd, const void* data, std::size_t n) {
 struct Worker {
   pid_t pid = -1;
   int fd = -1;
-  std::string buffer;  // bytes read, not yet a whole frame
+  std::string buffer;    // bytes read, not yet a whole frame
+  std::size_t next = 0;  // the task it runs now
+  bool running = false;  // not yet reaped
 };
 
-std::string exit_text(int status) {
-  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
-  if (WIFSIGNALED(status)) return std::string("was killed by ") + strsignal(WTERMSIG(status));
-  return "stopped";
+// Whatever ends the run (a result, a failure, an exception from a callback), no worker outlives
+// it: the rest are killed (they hold no file to clean up) and reaped.
+class WorkerSet {
+ public:
+  ~WorkerSet() { stop(); }
+  void stop() {
+    for (Worker& w : workers) {
+      if (w.running) ::kill(w.pid, SIGKILL);
+    }
+    for (Worker& w : workers) {
+      if (w.running) {
+        while (::waitpid(w.pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+        w.running = false;
+      }
+      if (w.fd >= 0) ::close(w.fd);
+      w.fd = -1;
+    }
+  }
+  std::vector<Worker> workers;
+};
+
+std::string name_of(const ProcessRunOptions& options, std::size_t task) {
+  return options.describe ? options.describe(task) : "task " + std::to_string(task);
+}
+
+bool cancelled(const ProcessRunOptions& options) {
+  return options.cancel && options.cancel->load();
+}
+
+ProcessRunOutcome run_here(std::size_t count, const std::function<std::string(std::size_t)>& task,
+                           const ProcessRunOptions& options) {
+  ProcessRunOutcome outcome;
+  outcome.results.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    if (cancelled(options)) {
+      outcome.status = RunStatus::kCancelled;
+      return outcome;
+    }
+    try {
+      outcome.results[i] = task(i);
+    } catch (const std::exception& e) {
+      outcome.status = RunStatus::kFailed;
+      outcome.failure = failure_text(name_of(options, i), e.what());
+      return outcome;
+    }
+    if (options.on_done) options.on_done(i, i + 1);
+  }
+  return outcome;
 }
 
 }  // namespace
 
-int online_cpus() {
-  const long n = ::sysconf(_SC_NPROCESSORS_ONLN);
-  return n > 0 ? static_cast<int>(n) : 1;
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(std::string("interrupted by signal ") + std::to_string(signal) + " (" +
+                         strsignal(signal) + ")"),
+      signal_(signal) {}
+
+std::string failure_text(const std::string& task, const std::string& what) {
+  std::string one_line = what;
+  for (char& c : one_line) {
+    if (c == '\n') c = ' ';
+  }
+  return task + ": " + one_line;
 }
 
-std::vector<std::string> run_in_processes(std::size_t count, int jobs,
-                                          const std::function<std::string(std::size_t)>& task,
-                                          const std::function<void(std::size_t done)>& on_done) {
-  std::vector<std::string> results(count);
-  if (jobs <= 1 || count <= 1) {
-    for (std::size_t i = 0; i < count; ++i) {
-      results[i] = task(i);
-      if (on_done) on_done(i + 1);
-    }
-    return results;
+std::string worker_exit_text(int wait_status) {
+  if (WIFSIGNALED(wait_status)) {
+    return "was killed by signal " + std::to_string(WTERMSIG(wait_status)) + " (" +
+           strsignal(WTERMSIG(wait_status)) + ")";
   }
-  jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(jobs), count));
-  std::vector<Worker> workers(static_cast<std::size_t>(jobs));
-  auto stop_all = [&workers] {
-    for (Worker& wk : workers) {
-      if (wk.pid > 0) ::kill(wk.pid, SIGTERM);
-    }
-    for (Worker& wk : workers) {
-      if (wk.fd >= 0) ::close(wk.fd);
-      if (wk.pid > 0) ::waitpid(wk.pid, nullptr, 0);
-      wk.pid = -1;
-      wk.fd = -1;
-    }
+  if (WIFEXITED(wait_status))
+    return "exited with status " + std::to_string(WEXITSTATUS(wait_status));
+  return "stopped";
+}
+
+int online_cpus() {
+  const long n = ::sysconf(_SC_NPROCESSORS_ONLN);
+  return n > 0 ? static_cast<int>(std::min<long>(n, kMaxJobs)) : 1;
+}
+
+int parse_jobs(const std::string& text) {
+  int jobs = 0;
+  const auto res = std::from_chars(text.data(), text.data() + text.size(), jobs);
+  if (text.empty() || res.ec != std::errc() || res.ptr != text.data() + text.size() || jobs < 1 ||
+      jobs > kMaxJobs) {
+    throw std::invalid_argument("--jobs " + text + ": must be a whole number in [1, " +
+                                std::to_string(kMaxJobs) + "]");
+  }
+  return jobs;
+}
+
+ProcessRunOutcome run_processes(std::size_t count,
+                                const std::function<std::string(std::size_t)>& task,
+                                const ProcessRunOptions& options) {
+  if (options.jobs <= 1 || count <= 1) return run_here(count, task, options);
+  const std::size_t stride = std::min(static_cast<std::size_t>(options.jobs), count);
+  ProcessRunOutcome outcome;
+  outcome.results.resize(count);
+
+  // Buffered output would otherwise be written again by nobody but lost to a child's _exit;
+  // flushed here it appears once, before the workers' progress.
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const StopSignals signals;
+  WorkerSet set;
+  const pid_t parent = ::getpid();
+  auto fail = [&outcome](std::string text) {
+    outcome.status = RunStatus::kFailed;
+    outcome.failure = std::move(text);
   };
-  for (int w = 0; w < jobs; ++w) {
+  for (std::size_t w = 0; w < stride; ++w) {
     int fds[2];
     if (::pipe(fds) != 0) {
-      stop_all();
-      throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+      fail(std::string("cannot create a pipe: ") + std::strerror(errno));
+      return outcome;  // the set stops the workers started so far
     }
     const pid_t pid = ::fork();
+    if (pid == 0) {
+      // Dies with the parent, even of SIGKILL, instead of computing for nobody.
+      ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (::getppid() != parent) ::_exit(1);
+      ::close(fds[0]);
+      for (const Worker& other : set.workers) ::close(other.fd);
+      signals.reset_in_child();
+      worker_main(fds[1], w, stride, count, task);
+    }
+    const int fork_errno = errno;
+    ::close(fds[1]);
     if (pid < 0) {
       ::close(fds[0]);
-      ::close(fds[1]);
-      stop_all();
-      throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
+      fail(std::string("cannot start a worker process: ") + std::strerror(fork_errno));
+      return outcome;
     }
-    if (pid == 0) {
-      ::close(fds[0]);
-      for (int o = 0; o < w; ++o) ::close(workers[static_cast<std::size_t>(o)].fd);
-      worker(fds[1], w, jobs, count, task);
-    }
-    ::close(fds[1]);
-    workers[static_cast<std::size_t>(w)] = {pid, fds[0], {}};
+    set.workers.push_back({pid, fds[0], {}, w, true});
   }
 
   std::size_t done = 0;
-  std::string failure;
   std::vector<pollfd> polls;
-  while (failure.empty()) {
-    polls.clear();
-    for (const Worker& wk : workers) {
-      if (wk.fd >= 0) polls.push_back({wk.fd, POLLIN, 0});
-    }
-    if (polls.empty()) break;
-    if (::poll(polls.data(), polls.size(), -1) < 0) {
-      if (errno == EINTR) continue;
-      failure = std::string("poll failed: ") + std::strerror(errno);
+  std::vector<Worker*> polled;
+  // One event at a time, then the loop's checks: a failure, a cancellation or a signal ends it.
+  while (outcome.status == RunStatus::kCompleted) {
+    if (const int signo = signals.take()) {
+      outcome.status = RunStatus::kInterrupted;
+      outcome.signal = signo;
       break;
     }
-    for (Worker& wk : workers) {
-      if (wk.fd < 0) continue;
-      bool readable = false;
-      for (const pollfd& p : polls) readable = readable || (p.fd == wk.fd && p.revents != 0);
-      if (!readable) continue;
-      char chunk[1 << 16];
-      const ssize_t n = ::read(wk.fd, chunk, sizeof chunk);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {  // the worker closed its end: finished or died
-        ::close(wk.fd);
-        wk.fd = -1;
-        continue;
+    if (cancelled(options)) {
+      outcome.status = RunStatus::kCancelled;
+      break;
+    }
+    polls.clear();
+    polled.clear();
+    for (Worker& w : set.workers) {
+      if (w.fd >= 0) {
+        polls.push_back({w.fd, POLLIN, 0});
+        polled.push_back(&w);
       }
-      wk.buffer.append(chunk, static_cast<std::size_t>(n));
-      while (wk.buffer.size() >= sizeof(FrameHeader)) {
+    }
+    if (polls.empty()) break;
+    if (::ppoll(polls.data(), polls.size(), nullptr, &signals.wait_mask()) < 0) {
+      if (errno == EINTR) continue;
+      fail(std::string("poll failed: ") + std::strerror(errno));
+      break;
+    }
+    for (std::size_t p = 0; p < polls.size() && outcome.status == RunStatus::kCompleted; ++p) {
+      if (polls[p].revents == 0) continue;
+      Worker& w = *polled[p];
+      char chunk[1 << 16];
+      const ssize_t n = ::read(w.fd, chunk, sizeof chunk);
+      if (n < 0) {
+        if (errno == EINTR || errno == EAGAIN) continue;
+        fail(std::string("cannot read from a worker process: ") + std::strerror(errno));
+        break;
+      }
+      if (n == 0) {  // the worker closed its end: finished or died
+        int status = 0;
+        while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        w.running = false;
+        ::close(w.fd);
+        w.fd = -1;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && w.next >= count) continue;
+        // Workers killed by the same Ctrl-C as this process are no failure: the run was
+        // interrupted (the process group's signal is already pending here).
+        if (signals.take() != 0) break;
+        const std::string how = "the worker process " + worker_exit_text(status);
+        fail(w.next < count ? failure_text(name_of(options, w.next), how)
+                            : "a worker process, after its last task, " + worker_exit_text(status));
+        break;
+      }
+      w.buffer.append(chunk, static_cast<std::size_t>(n));
+      // A cancellation from on_done leaves the rest unread: no result after it.
+      while (w.buffer.size() >= sizeof(FrameHeader) && outcome.status == RunStatus::kCompleted &&
+             !cancelled(options)) {
         FrameHeader h;
-        std::memcpy(&h, wk.buffer.data(), sizeof h);
-        if (wk.buffer.size() < sizeof h + h.length) break;
-        std::string body = wk.buffer.substr(sizeof h, h.length);
-        wk.buffer.erase(0, sizeof h + h.length);
-        if (h.task >= count) {
-          failure = "a worker sent a result for an unknown task";
+        std::memcpy(&h, w.buffer.data(), sizeof h);
+        if (w.buffer.size() - sizeof h < h.length) break;
+        std::string body = w.buffer.substr(sizeof h, h.length);
+        w.buffer.erase(0, sizeof h + h.length);
+        if (h.task != w.next) {
+          fail("a worker process sent a result for an unexpected task");
         } else if (h.status != 0) {
-          failure = "task " + std::to_string(h.task) + ": " + body;
+          fail(failure_text(name_of(options, h.task), body));
         } else {
-          results[h.task] = std::move(body);
+          outcome.results[h.task] = std::move(body);
+          w.next += stride;
           ++done;
-          if (on_done) on_done(done);
+          if (options.on_done) options.on_done(h.task, done);
         }
       }
     }
   }
-  if (!failure.empty()) {
-    stop_all();
-    throw std::runtime_error(failure);
-  }
-  for (Worker& wk : workers) {
-    int status = 0;
-    ::waitpid(wk.pid, &status, 0);
-    const pid_t pid = wk.pid;
-    wk.pid = -1;
-    if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0) && failure.empty()) {
-      failure = "worker process " + std::to_string(pid) + " " + exit_text(status);
+  set.stop();
+  // A stop signal that came with the last result still wins: the caller must not go on.
+  if (outcome.status != RunStatus::kInterrupted) {
+    if (const int signo = signals.take()) {
+      outcome.status = RunStatus::kInterrupted;
+      outcome.signal = signo;
     }
   }
-  if (failure.empty() && done != count) {
-    failure =
-        "workers finished " + std::to_string(done) + " of " + std::to_string(count) + " tasks";
+  if (outcome.status == RunStatus::kInterrupted && outcome.signal == 0) {
+    outcome.signal = g_stop_signal;
   }
-  if (!failure.empty()) throw std::runtime_error(failure);
+  if (outcome.status == RunStatus::kCompleted && done != count) {
+    fail("the worker processes finished " + std::to_string(done) + " of " + std::to_string(count) +
+         " tasks");
+  }
+  return outcome;
+}
+
+std::vector<std::string> run_in_processes(std::size_t count,
+                                          const std::function<std::string(std::size_t)>& task,
+                                          const ProcessRunOptions& options) {
+  ProcessRunOutcome outcome = run_processes(count, task, options);
+  switch (outcome.status) {
+    case RunStatus::kCompleted:
+      break;
+    case RunStatus::kFailed:
+      throw TaskFailed(outcome.failure);
+    case RunStatus::kCancelled:
+      throw TaskFailed("cancelled");
+    case RunStatus::kInterrupted:
+      throw Interrupted(outcome.signal);
+  }
+  std::vector<std::string> results;
+  results.reserve(count);
+  for (std::optional<std::string>& r : outcome.results) results.push_back(std::move(*r));
   return results;
 }
 

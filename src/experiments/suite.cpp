@@ -23,20 +23,6 @@ const std::vector<std::string>& edge_min_camera_models() {
   return models;
 }
 
-// Lengths before each encoded evaluation: one task's result holds every variant's.
-void put_length(std::string& out, std::uint64_t n) {
-  out.append(reinterpret_cast<const char*>(&n), sizeof n);
-}
-
-std::uint64_t get_length(const std::string& in, std::size_t& pos) {
-  std::uint64_t n = 0;
-  if (in.size() - pos < sizeof n) throw std::runtime_error("suite result: truncated");
-  std::memcpy(&n, in.data() + pos, sizeof n);
-  pos += sizeof n;
-  if (in.size() - pos < n) throw std::runtime_error("suite result: truncated");
-  return n;
-}
-
 SuiteOutcome outcome_of(const RunSummary& s, std::size_t run, const std::string& label) {
   SuiteOutcome o;
   o.run = run;
@@ -230,44 +216,48 @@ std::vector<SuiteOutcome> run_suite(const std::map<std::string, std::string>& sc
                                     const std::vector<SuiteRun>& runs,
                                     const std::vector<SuiteVariant>& variants, int jobs,
                                     const std::function<void(std::size_t done)>& on_done) {
+  ProcessRunOptions options;
+  options.jobs = jobs;
+  if (on_done) options.on_done = [&on_done](std::size_t, std::size_t done) { on_done(done); };
+  options.describe = [&runs](std::size_t i) {
+    const SuiteRun& r = runs[i];
+    return "run " + std::to_string(i + 1) + " (" + r.scene + ", object.distance_m " + r.distance_m +
+           ", aim " + r.aim + ", explosion.toward_camera_mps " + r.toward_camera_mps + ", mode " +
+           r.mode + ", seed " + std::to_string(r.seed) + ")";
+  };
   const std::vector<std::string> encoded = run_in_processes(
-      runs.size(), jobs,
+      runs.size(),
       [&](std::size_t i) {
         // Through the evaluation codec, doubles bit for bit, so a worker's numbers are the
         // parent's; the per-step series are dropped (the suite reads the summaries only).
-        std::string bytes;
+        std::vector<Evaluation> summaries;
         for (const SuiteOutcome& o :
              run_suite_once(scenes.at(runs[i].scene), runs[i], i, variants)) {
-          Evaluation e;
+          Evaluation& e = summaries.emplace_back();
           e.summary.strategy = o.variant;
           e.summary.near_fragments = o.near_fragments;
           e.summary.camera_hit_fragments = o.camera_hits;
           e.summary.deviation_mean_m = o.deviation_mean_m;
           e.summary.near_misses = o.near_misses;
           e.summary.strategy_ms_median = o.strategy_ms_median;
-          const std::string one = encode_evaluation(e);
-          put_length(bytes, one.size());
-          bytes += one;
         }
-        return bytes;
+        return encode_evaluations(summaries);
       },
-      on_done);
+      options);
   std::vector<SuiteOutcome> out;
   out.reserve(runs.size() * variants.size());
   for (std::size_t i = 0; i < encoded.size(); ++i) {
-    std::size_t pos = 0;
+    const std::vector<Evaluation> decoded = decode_evaluations(encoded[i]);
+    if (decoded.size() != variants.size()) {
+      throw std::runtime_error("suite result of run " + std::to_string(i + 1) +
+                               ": variants missing");
+    }
     for (std::size_t k = 0; k < variants.size(); ++k) {
-      const std::uint64_t n = get_length(encoded[i], pos);
-      const Evaluation e = decode_evaluation(encoded[i].substr(pos, n));
-      pos += n;
-      if (e.summary.strategy != variants[k].label) {
+      if (decoded[k].summary.strategy != variants[k].label) {
         throw std::runtime_error("suite result of run " + std::to_string(i + 1) +
                                  ": variants out of order");
       }
-      out.push_back(outcome_of(e.summary, i, variants[k].label));
-    }
-    if (pos != encoded[i].size()) {
-      throw std::runtime_error("suite result of run " + std::to_string(i + 1) + ": extra bytes");
+      out.push_back(outcome_of(decoded[k].summary, i, variants[k].label));
     }
   }
   return out;

@@ -120,7 +120,7 @@ std::vector<SuiteOutcome> run_suite_once(const std::string& scene_text, const Su
 
 // Every run on `jobs` worker processes (process_runner.hpp; one task per run), outcomes in run
 // order then variant order, the same for any `jobs` but for strategy_ms_median. `on_done` gets
-// the number of runs finished so far.
+// the number of runs finished so far. Throws TaskFailed naming the run, or Interrupted.
 std::vector<SuiteOutcome> run_suite(const std::map<std::string, std::string>& scenes,
                                     const std::vector<SuiteRun>& runs,
                                     const std::vector<SuiteVariant>& variants, int jobs,

@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include "experiments/evaluation_codec.hpp"
+#include "experiments/process_runner.hpp"
 #include "io/number_format.hpp"
 
 namespace fragsim {
@@ -279,6 +281,67 @@ std::vector<SweepStrategyStats> summarise_single_key(const std::vector<SweepOutc
     }
     // The threshold starts the longest run of all-zero values that reaches the largest value.
     for (std::size_t i = st.values.size(); i-- > 0 && st.values[i].all_zero();) st.threshold = i;
+  }
+  return out;
+}
+
+std::vector<SceneOverride> sweep_overrides(const SweepPlan& plan,
+                                           const std::vector<std::size_t>& value_index,
+                                           std::uint64_t seed) {
+  std::vector<SceneOverride> o = plan.base;
+  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
+    o.push_back({plan.axes[k].key, plan.axes[k].values[value_index[k]]});
+  }
+  o.push_back({"simulation.seed", std::to_string(seed)});
+  return o;
+}
+
+std::string describe_combination(const SweepPlan& plan,
+                                 const std::vector<std::size_t>& value_index) {
+  std::string s;
+  for (std::size_t k = 0; k < plan.axes.size(); ++k) {
+    s += (k > 0 ? ", " : "") + plan.axes[k].key + "=" + plan.axes[k].values[value_index[k]];
+  }
+  return s;
+}
+
+std::string describe_sweep_job(const SweepPlan& plan, const SweepJob& job) {
+  return describe_combination(plan, job.value_index) + ", seed " + std::to_string(job.seed);
+}
+
+std::vector<std::vector<Evaluation>> run_sweep(
+    const SweepPlan& plan, int jobs, const std::function<void(std::size_t done)>& on_done) {
+  ProcessRunOptions options;
+  options.jobs = jobs;
+  if (on_done) options.on_done = [&on_done](std::size_t, std::size_t done) { on_done(done); };
+  options.describe = [&plan](std::size_t j) {
+    return "job " + std::to_string(j + 1) + " (" + describe_sweep_job(plan, plan.jobs[j]) + ")";
+  };
+  const std::vector<std::string> encoded = run_in_processes(
+      plan.jobs.size(),
+      [&plan](std::size_t j) {
+        const SweepJob& job = plan.jobs[j];
+        const Scene scene = parse_scene(plan.scene_text, plan.origin,
+                                        sweep_overrides(plan, job.value_index, job.seed));
+        // Summaries only: the rows read nothing else.
+        std::vector<Evaluation> summaries;
+        for (const Evaluation& e : compare(scene, plan.strategies, plan.occlusion)) {
+          Evaluation& one = summaries.emplace_back();
+          one.summary = e.summary;
+          one.has_deviation = e.has_deviation;
+        }
+        return encode_evaluations(summaries);
+      },
+      options);
+  std::vector<std::vector<Evaluation>> out;
+  out.reserve(encoded.size());
+  for (std::size_t j = 0; j < encoded.size(); ++j) {
+    out.push_back(decode_evaluations(encoded[j]));
+    if (out.back().size() != plan.strategies.size()) {
+      throw std::runtime_error("job " + std::to_string(j + 1) + " (" +
+                               describe_sweep_job(plan, plan.jobs[j]) +
+                               "): strategies missing in the worker's result");
+    }
   }
   return out;
 }

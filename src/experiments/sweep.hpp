@@ -3,14 +3,19 @@
 // combination run for several seeds. This file holds the pure parts, apart from processes and
 // files so they can be tested: parsing --vary specifications, the job list in its fixed order,
 // reading the sweep CSV back and the single-key summary (zero intersections per value, and the
-// smallest value from which a strategy keeps zero intersections).
+// smallest value from which a strategy keeps zero intersections). run_sweep, at the end, runs the
+// jobs on the worker processes (process_runner.hpp).
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "experiments/evaluation.hpp"
+#include "sim/scene_file.hpp"
 
 namespace fragsim {
 
@@ -99,5 +104,37 @@ std::vector<SweepStrategyStats> summarise_single_key(const std::vector<SweepOutc
 
 // Whether summarise_single_key ordered the values of `rows` numerically.
 bool sweep_values_numeric(const std::vector<SweepOutcome>& rows);
+
+// ---- Running a sweep. ----
+
+// Everything the workers need, fixed before the first fork (cli/sweep_command.cpp checks it all).
+struct SweepPlan {
+  std::string scene_text;               // the --scene file's text, read once
+  std::string origin;                   // its path, for messages
+  std::vector<SceneOverride> base;      // the --section.key options
+  std::vector<SweepAxis> axes;          // the --vary options
+  std::vector<SweepJob> jobs;           // in output order
+  std::vector<std::string> strategies;  // in --strategies order
+  bool occlusion = true;
+};
+
+// A job's scene keys: the base options, one value per axis, the seed.
+std::vector<SceneOverride> sweep_overrides(const SweepPlan& plan,
+                                           const std::vector<std::size_t>& value_index,
+                                           std::uint64_t seed);
+
+// "a=1, b=2": one combination of the varied values; with the seed, "a=1, b=2, seed 3".
+std::string describe_combination(const SweepPlan& plan,
+                                 const std::vector<std::size_t>& value_index);
+std::string describe_sweep_job(const SweepPlan& plan, const SweepJob& job);
+
+// Every job compared (compare(), `none` first) on `jobs` worker processes, one task per job. Per
+// job, in plan order whatever the order of completion, the strategies' evaluations in
+// --strategies order, summaries only (no per-step series), bit for bit as the worker computed
+// them (evaluation_codec.hpp). `on_done` gets the number of jobs finished so far. Throws
+// TaskFailed naming the job ("job 3 (a=1, seed 2): ..."), or Interrupted.
+std::vector<std::vector<Evaluation>> run_sweep(
+    const SweepPlan& plan, int jobs,
+    const std::function<void(std::size_t done)>& on_done = nullptr);
 
 }  // namespace fragsim

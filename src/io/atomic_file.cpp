@@ -41,7 +41,10 @@ extern "C" void on_interrupt(int sig) {
   for (std::size_t i = 0; i < kMaxLive; ++i) {
     if (g_slot_used[i].load()) ::unlink(g_slot_path[i].data());
   }
-  ::_exit(128 + sig);
+  // Die of the signal itself, as without this handler (a shell reads 128 + sig), so whoever
+  // waits for fragsim sees how it ended.
+  ::signal(sig, SIG_DFL);
+  ::raise(sig);
 }
 
 }  // namespace

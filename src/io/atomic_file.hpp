@@ -29,8 +29,8 @@ class AtomicFile {
   int slot_ = -1;  // where the interrupt handler finds the temporary path
 };
 
-// On SIGINT or SIGTERM, removes every temporary file of a live AtomicFile, then exits with
-// 128 + the signal: an interrupted run leaves the old files or none, and no debris. (SIGKILL
+// On SIGINT or SIGTERM, removes every temporary file of a live AtomicFile, then dies of the
+// signal: an interrupted run leaves the old files or none, and no debris. (SIGKILL
 // cannot be caught; its debris is named PATH.tmp.PID.) Call once, from main.
 void remove_temporaries_on_interrupt();
 

@@ -59,4 +59,19 @@ TEST(Cli, RunPrintsATableRow) {
   EXPECT_NE(r.out.find("\nnone "), std::string::npos) << r.out;
 }
 
+TEST(Cli, BadJobsIsOneLineNamingJobs) {
+  const std::string sweep = "sweep --scene " + kScene + " --vary object.distance_m=3,5 --out " +
+                            ::testing::TempDir() + "/fragsim_never_written.csv";
+  for (const std::string& command : {"compare --scene " + kScene, sweep}) {
+    for (const std::string value : {"0", "-1", "abc"}) {
+      const Result r = fragsim(command + " --jobs " + value);
+      EXPECT_EQ(r.status, 2) << command << " --jobs " << value << ": " << r.out;
+      EXPECT_EQ(lines(r.out), 1) << r.out;
+      EXPECT_NE(r.out.find(": --jobs " + value + ": must be a whole number in [1, 1024]\n"),
+                std::string::npos)
+          << r.out;
+    }
+  }
+}
+
 }  // namespace

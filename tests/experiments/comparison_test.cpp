@@ -6,7 +6,6 @@
 #include <filesystem>
 
 #include "experiments/evaluation.hpp"
-#include "experiments/process_runner.hpp"
 #include "metrics/trajectory_record.hpp"
 #include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
@@ -114,17 +113,6 @@ TEST(Comparison, WorkerProcessesGiveTheSameResultsAsOneProcess) {
   for (std::size_t i = 0; i < one.size(); ++i) {
     EXPECT_EQ(one[i].physics_s_per_step.size(), two[i].physics_s_per_step.size());
   }
-}
-
-TEST(Comparison, AFailingWorkerIsReportedNotHidden) {
-  EXPECT_THROW(run_in_processes(3, 2,
-                                [](std::size_t i) -> std::string {
-                                  if (i == 1) throw std::runtime_error("boom");
-                                  return "ok";
-                                }),
-               std::runtime_error);
-  const auto r = run_in_processes(5, 2, [](std::size_t i) { return std::to_string(i * i); });
-  EXPECT_EQ(r, (std::vector<std::string>{"0", "1", "4", "9", "16"}));
 }
 
 }  // namespace

@@ -9,10 +9,13 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "report/csv_export.hpp"
 
@@ -279,6 +282,45 @@ TEST(SweepCommand, BadVaryValueIsOneLineNamingOptionAndValue) {
   EXPECT_EQ(range.status, 2);
   EXPECT_EQ(lines(range.out), 1) << range.out;
   EXPECT_NE(range.out.find("step must be > 0"), std::string::npos) << range.out;
+}
+
+// Test-only environment variables for one call (sim/simulation.hpp), removed again after it.
+class ScopedEnv {
+ public:
+  explicit ScopedEnv(std::vector<std::pair<std::string, std::string>> vars)
+      : vars_(std::move(vars)) {
+    for (const auto& [name, value] : vars_) ::setenv(name.c_str(), value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    for (const auto& [name, value] : vars_) ::unsetenv(name.c_str());
+  }
+  ScopedEnv(const ScopedEnv&) = delete;
+  ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> vars_;
+};
+
+TEST(SweepCommand, AWorkerThatDiesIsOneLineNamingTheJob) {
+  // 3 jobs of 60 steps (none, then edge) on 2 workers: worker 0 runs jobs 1 and 3, worker 1 job 2
+  // only, so step 100 of a worker is reached once, in job 3, where that worker kills itself.
+  const std::string dir = fresh_dir("fragsim_sweep_crash");
+  Result r;
+  {
+    const ScopedEnv env({{"FRAGSIM_TEST_RAISE_AT_STEP", "100"},
+                         {"FRAGSIM_TEST_RAISE_SIGNAL", "KILL"},
+                         {"FRAGSIM_TEST_RAISE_IN", "self"}});
+    r = fragsim("sweep --scene " + std::string(FRAGSIM_DATA_DIR) +
+                "/scenes/thesis125.ini --object.splits 2 --simulation.duration_s 0.5 --vary "
+                "object.distance_m=3,5,7 --strategies none,edge --jobs 2 --out " +
+                dir + "/x.csv");
+  }
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.out,
+            "fragsim sweep: job 3 (object.distance_m=7, seed 1): the worker process was killed "
+            "by signal 9 (Killed)\n");
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,11 +1,17 @@
 #pragma once
 // Runs the fragsim executable (the FRAGSIM_BINARY this build made) for end-to-end tests.
 
+#include <stdlib.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace fragsim::test {
 
@@ -25,5 +31,49 @@ inline Result run_fragsim(const std::string& args) {
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   return r;
 }
+
+// Runs fragsim with extra environment variables, its output discarded, and returns the raw wait
+// status, so a death by a signal is told apart from an exit (WIFSIGNALED, WTERMSIG).
+inline int run_fragsim_status(const std::string& args,
+                              const std::vector<std::pair<std::string, std::string>>& env = {}) {
+  // exec: the shell becomes fragsim, so the status is fragsim's own, not the shell's report of it.
+  const std::string cmd = "exec " + std::string(FRAGSIM_BINARY) + " " + args + " >/dev/null 2>&1";
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    for (const auto& [name, value] : env) ::setenv(name.c_str(), value.c_str(), 1);
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+  }
+  return status;
+}
+
+// A folder of its own under the test temporary folder (mkdtemp), removed with everything in it
+// when destroyed: two checkouts testing at once never share a path.
+class UniqueDir {
+ public:
+  explicit UniqueDir(const std::string& stem) {
+    std::string pattern =
+        (std::filesystem::path(std::filesystem::temp_directory_path()) / (stem + ".XXXXXX"))
+            .string();
+    if (!::mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp " + pattern);
+    path_ = pattern;
+  }
+  ~UniqueDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  UniqueDir(const UniqueDir&) = delete;
+  UniqueDir& operator=(const UniqueDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+  std::string str() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
 
 }  // namespace fragsim::test
