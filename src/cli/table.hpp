@@ -1,5 +1,6 @@
 #pragma once
-// A plain text table with aligned columns, for the terminal.
+// A plain text table with aligned columns, for the terminal (laid out by
+// report/text_table.hpp, so every command's table looks like the comparison's).
 
 #include <ostream>
 #include <string>
@@ -19,6 +20,7 @@ class Table {
   std::vector<std::vector<std::string>> rows_;
 };
 
+// io/number_format.hpp's fixed_text: the text the comparison table and the HTML page print.
 std::string fixed(double v, int decimals);
 
 }  // namespace fragsim::cli

@@ -1,22 +1,24 @@
 #pragma once
-// Numbers as text: the shortest form that reads back as the same double, identical on every
-// platform (std::to_chars), so scene files round-trip and CSV files are byte-for-byte repeatable.
+// Numbers as text, the one place that decides how: the terminal, the HTML page and every CSV file
+// format through these, so one value reads the same wherever it is shown. std::to_chars (no
+// locale, the same text on every platform) throughout.
 
-#include <charconv>
 #include <string>
 
 namespace fragsim {
 
-inline void append_double(std::string& out, double v) {
-  char buf[32];
-  const auto res = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, res.ptr);
-}
+// The shortest form that reads back as the same double, so scene files round-trip and CSV files
+// are byte-for-byte repeatable.
+void append_double(std::string& out, double v);
+std::string format_double(double v);
 
-inline std::string format_double(double v) {
-  std::string s;
-  append_double(s, v);
-  return s;
-}
+// `decimals` digits after the point, rounded from the double's exact value with ties to even
+// (what printf's "%.*f" prints). Never "-0.0": a negative that rounds to zero prints without a
+// sign, so a solver's -1e-17 reads as the 0 it stands for. NaN prints "nan" (whatever its sign
+// bit), infinities "inf" and "-inf".
+std::string fixed_text(double v, int decimals);
+
+// A share (0.25) as a percentage with `decimals` digits ("25.0"), rounded as fixed_text.
+std::string percent_text(double share, int decimals);
 
 }  // namespace fragsim

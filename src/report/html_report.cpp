@@ -3,18 +3,19 @@
 #include <filesystem>
 
 #include "io/atomic_file.hpp"
+#include "io/number_format.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
-#include "report/fixed_text.hpp"
 #include "report/html_escape.hpp"
+#include "report/results_table.hpp"
 #include "report/svg_chart.hpp"
 #include "sim/scene_file.hpp"
-#include "sim/world.hpp"
 
 namespace fragsim {
 namespace {
 
 constexpr const char* kSheetFile = "sheet.png";
+constexpr const char* kTableFile = "table.csv";
 
 // Kept in the page (no stylesheet to fetch). System fonts only.
 constexpr const char* kStyle =
@@ -47,7 +48,7 @@ footer { margin-top: 2em; font-size: 0.85em; color: #666; }
 )";
 
 std::string percent(double share) {
-  return fixed_text(100.0 * share, 1);
+  return percent_text(share, 1);
 }
 
 std::string count(int n, const std::string& singular, const std::string& plural) {
@@ -79,100 +80,17 @@ std::string joined(const std::vector<std::string>& items) {
   return out;
 }
 
-std::string td(const std::string& text) {
-  return "<td>" + html_escape(text) + "</td>";
-}
-
-// The terminal report's table (report_table.cpp) without its two timing columns. The headers are
-// the terminal's names with the unit moved to a second line (dev_mean_m: dev_mean over m), which
-// keeps the 16 columns within a 1200-pixel window; a tooltip on each says what it counts.
-std::string comparison_table(const std::vector<Evaluation>& runs) {
-  struct Header {
-    const char* name;
-    const char* unit;
-    const char* tip;
-  };
-  static const Header kHeaders[] = {
-      {"strategy", "", "the strategy compared"},
-      {"near", "", "fragments meeting the near rectangle (swept between steps)"},
-      {"near_st", "", "fragment-steps meeting the near rectangle"},
-      {"cam", "", "fragments touching the camera body"},
-      {"dev_mean", "m", "mean over fragments of the largest distance from the none run"},
-      {"dev_max", "m", "largest deviation of any fragment"},
-      {"dev>1cm", "%", "share of fragments moved more than 1 cm"},
-      {"occ_mean", "%", "mean share of the screen covered"},
-      {"occ_max", "%", "largest share of the screen covered"},
-      {"ctr_max", "%", "largest share of the central region covered"},
-      {"exits", "T/B/L/R/N/S", "how fragments left the screen: top/bottom/left/right/near/stayed"},
-      {"miss", "", "near misses: passed close to the eye without touching"},
-      {"cand0", "", "edge candidates at t = 0"},
-      {"impulse", "N s", "total impulse applied"},
-      {"capped", "", "force-steps cut by the acceleration cap"},
-      {"near_min", "m", "smallest near distance used"},
-  };
-  std::string out = "<div class=\"table-wrap\"><table>\n<thead><tr>";
-  for (const Header& h : kHeaders) {
-    out += "<th title=\"" + html_escape(h.tip) + "\">" + html_escape(h.name) + "<span>" +
-           (*h.unit ? html_escape(h.unit) : "&nbsp;") + "</span></th>";
-  }
-  out += "</tr></thead>\n<tbody>\n";
-  const std::optional<std::size_t> best = best_for_thesis_goals(runs);
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const Evaluation& e = runs[i];
-    const RunSummary& s = e.summary;
-    const bool occ = has_occlusion(e);
-    const std::string exits = std::to_string(s.exits_top) + "/" + std::to_string(s.exits_bottom) +
-                              "/" + std::to_string(s.exits_left) + "/" +
-                              std::to_string(s.exits_right) + "/" + std::to_string(s.exits_near) +
-                              "/" + std::to_string(s.exits_stayed);
-    const bool is_best = best && *best == i && hits(s) == 0;
-    out += is_best ? "<tr class=\"best\">" : "<tr>";
-    out += td(s.strategy) + td(std::to_string(s.near_fragments)) +
-           td(std::to_string(s.near_fragment_steps)) + td(std::to_string(s.camera_hit_fragments)) +
-           td(e.has_deviation ? fixed_text(s.deviation_mean_m, 4) : "-") +
-           td(e.has_deviation ? fixed_text(s.deviation_max_m, 3) : "-") +
-           td(e.has_deviation ? percent(s.deviated_share) : "-") +
-           td(occ ? percent(s.occlusion_mean) : "-") + td(occ ? percent(s.occlusion_max) : "-") +
-           td(occ ? percent(s.central_occlusion_max) : "-") + td(exits) +
-           td(std::to_string(s.near_misses)) + td(std::to_string(s.candidates_initial)) +
-           td(fixed_text(s.impulse_Ns, 2)) + td(std::to_string(s.capped_forces)) +
-           td(fixed_text(s.min_near_m, 3));
-    out += "</tr>\n";
-  }
-  out += "</tbody></table></div>\n";
-  return out;
-}
-
-// The terminal report's remarks below its table, but the timings.
-std::vector<std::string> table_notes(const Scene& scene, const std::vector<Evaluation>& runs) {
-  std::vector<std::string> notes;
-  notes.push_back(
-      "near: fragments meeting the near rectangle (tested on the motion between steps too), "
-      "near_st: fragment-steps, cam: camera-body hits; dev: deviation from the none run; "
-      "occ/ctr: share of the screen and of its central region covered; exits: "
-      "Top/Bottom/Left/Right/Near/Stayed; miss: near misses within " +
-      fixed_text(scene.metrics.near_miss_m, 2) +
-      " m; cand0: edge candidates at t = 0; capped: forces cut by a_max. The highlighted row met "
-      "the thesis's goals with the least deviation. Timings are not on this page (it is the same "
-      "bytes for the same scene and seed): the terminal report and --csv's timing.csv have them.");
-  for (const Evaluation& e : runs) {
-    const RunSummary& s = e.summary;
-    if (s.strategy == "near-plane") {
-      notes.push_back("near-plane: near distance down to " + fixed_text(s.min_near_m, 3) +
-                      " m, depth step at " + fixed_text(scene.near_plane.ref_distance_m, 1) +
-                      " m: " + fixed_text(1e3 * s.depth_step_m, 3) + " mm" +
-                      (z_fighting(s, scene.near_plane.ref_distance_m) ? " (z-fighting)" : "") +
-                      ".");
-    }
-    if (s.strategy == "wall") {
-      notes.push_back("wall: " + std::to_string(s.wall_contacts) +
-                      " contact points with the wall.");
-    }
-    if (s.unsaved_by_cap > 0) {
-      notes.push_back(s.strategy + ": " + std::to_string(s.unsaved_by_cap) +
-                      " fragments the acceleration cap left unsaved (capped and still "
-                      "intersecting).");
-    }
+// The notes under the page's table, as HTML: the legend, what the page leaves out, then the
+// runs' notes (the terminal's, but the timings).
+std::vector<std::string> table_notes(const ResultsTable& table) {
+  std::vector<std::string> notes{
+      legend_html(table) +
+      " The highlighted row met the thesis&#39;s goals with the least deviation. Timings are not "
+      "on this page (it is the same bytes for the same scene and seed): the terminal report and "
+      "--csv&#39;s timing.csv have them. The table as CSV: <a href=\"" +
+      std::string(kTableFile) + "\">" + kTableFile + "</a>."};
+  for (const ResultsNote& n : table.notes) {
+    if (!n.timing) notes.push_back(html_escape(n.text) + ".");
   }
   return notes;
 }
@@ -370,11 +288,9 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
   h += kStyle;
   h += "</style>\n</head>\n<body>\n<header>\n";
   h += "<h1>fragsim: strategies compared on scene " + name + "</h1>\n";
+  const ResultsTable table = results_table(scene, runs);
   h += "<p class=\"meta\">" +
-       html_escape(std::to_string(scene.fragment_count()) + " fragments, " +
-                   std::to_string(scene.step_count()) + " steps of " +
-                   fixed_text(scene.sim.dt_s, 5) + " s, seed " + std::to_string(scene.sim.seed) +
-                   ", ODE " + World::ode_version() +
+       html_escape(table.caption +
                    "; every strategy on the same scene and seed, deviation measured against "
                    "none.") +
        "</p>\n</header>\n";
@@ -383,8 +299,8 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
   for (const std::string& p : report_reading(runs)) h += "<p>" + html_escape(p) + "</p>\n";
   h += "</section>\n";
 
-  h += "<section>\n<h2>Comparison</h2>\n" + comparison_table(runs) + "<div class=\"notes\">\n";
-  for (const std::string& n : table_notes(scene, runs)) h += "<p>" + html_escape(n) + "</p>\n";
+  h += "<section>\n<h2>Comparison</h2>\n" + results_html(table) + "<div class=\"notes\">\n";
+  for (const std::string& n : table_notes(table)) h += "<p>" + n + "</p>\n";
   h += "</div>\n</section>\n";
 
   h += "<section>\n<h2>Over time</h2>\n<div class=\"charts\">\n";
@@ -428,9 +344,11 @@ std::vector<std::string> write_html_report(const std::string& dir, const Scene& 
   figure.height_px = sheet.height();
   const std::string sheet_path = (fs::path(dir) / kSheetFile).string();
   const std::string page_path = (fs::path(dir) / "index.html").string();
+  const std::string table_path = (fs::path(dir) / kTableFile).string();
   write_png(sheet_path, sheet);
+  write_file_atomically(table_path, results_csv(results_table(scene, runs), false));
   write_file_atomically(page_path, html_report(scene, runs, figure));
-  return {page_path, sheet_path};
+  return {page_path, sheet_path, table_path};
 }
 
 }  // namespace fragsim

@@ -1,7 +1,8 @@
 #pragma once
 // The comparison as one HTML page (fragsim compare --report DIR): the scene, a reading of the
-// numbers in prose, the comparison table, the per-step metrics as inline SVG line charts, the
-// contact sheet (DIR/sheet.png, beside the page) and the scene's settings. Nothing is fetched:
+// numbers in prose, the comparison table (report/results_table.hpp, the terminal's cells; also
+// DIR/table.csv), the per-step metrics as inline SVG line charts, the contact sheet
+// (DIR/sheet.png, beside the page) and the scene's settings. Nothing is fetched:
 // no script, no font, no stylesheet from elsewhere; the page opens from disk.
 //
 // The page is the same bytes for the same scene and seed: it holds no date and no wall-clock
@@ -39,8 +40,9 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
                         const std::optional<SheetFigure>& sheet);
 
 // Draws the contact sheet from `recorder` (rows: the runs' strategies, columns:
-// report_sheet_steps) into DIR/sheet.png, then writes DIR/index.html; each file whole or not at
-// all. DIR must exist (prepare_output_dir). Returns the paths written.
+// report_sheet_steps) into DIR/sheet.png, writes the page's table as DIR/table.csv, then
+// DIR/index.html; each file whole or not at all. DIR must exist (prepare_output_dir). Returns the
+// paths written.
 std::vector<std::string> write_html_report(const std::string& dir, const Scene& scene,
                                            const std::vector<Evaluation>& runs,
                                            const FrameRecorder& recorder);

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "report/fixed_text.hpp"
+#include "io/number_format.hpp"
 #include "report/html_escape.hpp"
 
 namespace fragsim {

@@ -1,7 +1,8 @@
 // The HTML report (fragsim compare --report DIR): the SVG line chart against hand-worked
 // coordinates, escaping, the reading in prose on hand-made summaries, the page built from a real
-// comparison of thesis125.ini, and the command end to end: the same bytes on a rerun, a non-empty
-// folder refused without --force, an unwritable folder a one-line error.
+// comparison of thesis125.ini, and the command end to end: the same bytes on a rerun (page,
+// sheet and table.csv), a non-empty folder refused without --force, an unwritable folder a
+// one-line error.
 
 #include <gtest/gtest.h>
 
@@ -324,6 +325,12 @@ TEST(HtmlReport, SameSceneAndSeedWriteTheSameBytes) {
   ASSERT_GT(page.size(), 10000u);
   EXPECT_EQ(page, read_all(b / "index.html"));
   EXPECT_EQ(read_all(a / "sheet.png"), read_all(b / "sheet.png"));
+  // The page's table as CSV beside it, linked from the page, as repeatable as the page.
+  const std::string table = read_all(a / "table.csv");
+  EXPECT_EQ(table, read_all(b / "table.csv"));
+  EXPECT_EQ(table.rfind("strategy,near,near_st,cam,dev_mean_m,", 0), 0u) << table;
+  EXPECT_EQ(table.find("_ms"), std::string::npos) << table;
+  EXPECT_NE(page.find("<a href=\"table.csv\">"), std::string::npos);
   // The page's image is the sheet beside it, at its size.
   const Image sheet = read_png((a / "sheet.png").string());
   EXPECT_NE(page.find("src=\"sheet.png\" width=\"" + std::to_string(sheet.width()) +
