@@ -17,14 +17,10 @@
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
+#include "geometry/frustum.hpp"
 #include "render/image.hpp"
 
 namespace fragsim {
-
-struct ScreenPoint {
-  double x = 0.0;  // pixels from the left edge
-  double y = 0.0;  // pixels from the top edge
-};
 
 // Sutherland-Hodgman against one plane z = plane_z: keeps the part of the convex polygon
 // in[0..n) with z >= plane_z (keep_greater) or z <= plane_z, in order; points made on the plane
