@@ -1,13 +1,13 @@
 #pragma once
-// The camera at one instant: where the eye is, how it is oriented and its perspective frustum.
-// Plain data shared by the simulation, the strategies and the metrics.
+// The camera at one instant: where the eye is, how it is oriented and its perspective frustum
+// (whose geometry is frustum.hpp's), and the world-to-camera change of coordinates. Plain data
+// shared by the simulation, the strategies and the metrics.
 
 #include <Eigen/Core>
-#include <cmath>
+
+#include "geometry/frustum.hpp"
 
 namespace fragsim {
-
-inline constexpr double kPi = 3.14159265358979323846;
 
 struct CameraPose {
   Eigen::Vector3d eye_m{0, 0, 0};
@@ -19,10 +19,11 @@ struct CameraPose {
   double near_m = 0.1;
   double far_m = 500.0;
 
-  // Half extents of the frustum's cross-section at view depth `depth_m`.
-  double half_height_at(double depth_m) const {
-    return depth_m * std::tan(0.5 * fovy_deg * kPi / 180.0);
-  }
+  Frustum frustum() const { return Frustum(fovy_deg, aspect, near_m, far_m); }
+
+  // Half extents of the frustum's cross-section at view depth `depth_m`; the same bits as
+  // frustum()'s, without building one (strategies call these per fragment).
+  double half_height_at(double depth_m) const { return depth_m * tan_half_fovy(fovy_deg); }
   double half_width_at(double depth_m) const { return aspect * half_height_at(depth_m); }
   double near_half_height_m() const { return half_height_at(near_m); }
   double near_half_width_m() const { return half_width_at(near_m); }

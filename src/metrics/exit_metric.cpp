@@ -39,8 +39,9 @@ bool on_screen(const CameraPose& camera, const Eigen::Vector3d& c_m) {
 Exit classify(const CameraPose& camera, const Eigen::Vector3d& c_m) {
   const double z = c_m.z();
   if (z < camera.near_m) return Exit::kNear;
-  const double nx = c_m.x() / camera.half_width_at(z);
-  const double ny = c_m.y() / camera.half_height_at(z);
+  const Eigen::Vector2d n = camera.frustum().normalized(c_m);
+  const double nx = n.x();
+  const double ny = n.y();
   // A tie (a corner) goes to the side border; the split is arbitrary but deterministic.
   if (std::abs(ny) > std::abs(nx)) return ny > 0.0 ? Exit::kTop : Exit::kBottom;
   return nx < 0.0 ? Exit::kLeft : Exit::kRight;

@@ -9,29 +9,27 @@
 #include <limits>
 #include <numeric>
 
+#include "geometry/camera_box.hpp"
+#include "geometry/frustum.hpp"
+
 namespace fragsim {
 
 namespace {
-
-struct Point2 {
-  double x = 0.0;
-  double y = 0.0;
-};
 
 // A box cut by one plane keeps at most 7 corners and gains at most 6 cut points; uncut it has 8.
 constexpr int kMaxPoints = 14;
 
 // Twice the signed area of the triangle o, a, b (> 0: a counter-clockwise turn in a y-up frame).
-double cross(const Point2& o, const Point2& a, const Point2& b) {
+double cross(const ScreenPoint& o, const ScreenPoint& a, const ScreenPoint& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
 // Andrew's monotone chain over p[0..n), which it sorts in place. Writes the hull's vertices,
 // without collinear points or a repeated first vertex, to hull (room for 2 n) and returns their
 // count: 1 or 2 for a degenerate hull. Insertion sort, because n <= 14 and nothing may allocate.
-int convex_hull(Point2* p, int n, Point2* hull) {
+int convex_hull(ScreenPoint* p, int n, ScreenPoint* hull) {
   for (int i = 1; i < n; ++i) {
-    const Point2 v = p[i];
+    const ScreenPoint v = p[i];
     int j = i - 1;
     while (j >= 0 && (p[j].x > v.x || (p[j].x == v.x && p[j].y > v.y))) {
       p[j + 1] = p[j];
@@ -58,7 +56,7 @@ int convex_hull(Point2* p, int n, Point2* hull) {
 // Marks the pixels whose centre lies in the closed convex polygon hull[0..n) (pixel units, any
 // orientation) and returns their count. Each row's span comes from the polygon's crossings of the
 // row's centre line, so a row costs one pass over the (at most 14) edges plus one fill.
-int fill_hull(const Point2* hull, int n, int width_px, int height_px, std::uint8_t* coverage) {
+int fill_hull(const ScreenPoint* hull, int n, int width_px, int height_px, std::uint8_t* coverage) {
   double y_min = hull[0].y;
   double y_max = hull[0].y;
   for (int i = 1; i < n; ++i) {
@@ -76,8 +74,8 @@ int fill_hull(const Point2* hull, int n, int width_px, int height_px, std::uint8
     double x_lo = std::numeric_limits<double>::infinity();
     double x_hi = -std::numeric_limits<double>::infinity();
     for (int i = 0; i < n; ++i) {
-      const Point2& a = hull[i];
-      const Point2& b = hull[i + 1 == n ? 0 : i + 1];
+      const ScreenPoint& a = hull[i];
+      const ScreenPoint& b = hull[i + 1 == n ? 0 : i + 1];
       if ((yc < a.y && yc < b.y) || (yc > a.y && yc > b.y)) continue;
       if (a.y == b.y) {  // a horizontal edge on the centre line: all of it is inside
         x_lo = std::min(x_lo, std::min(a.x, b.x));
@@ -105,42 +103,27 @@ struct Projection {
   double near_m = 0.0;
   double tan_x = 0.0;  // half width of the frustum per metre of depth
   double tan_y = 0.0;  // half height per metre of depth
-  double centre_x_px = 0.0;
-  double centre_y_px = 0.0;
-  double scale_x_px = 0.0;  // pixels per unit of x / z
-  double scale_y_px = 0.0;  // pixels per unit of y / z
+  PixelProjection pixels;
 
-  // y flips because rows count down from the top of the screen.
-  Point2 project(const Eigen::Vector3d& p) const {
-    return {centre_x_px + scale_x_px * p.x() / p.z(), centre_y_px - scale_y_px * p.y() / p.z()};
-  }
+  ScreenPoint project(const Eigen::Vector3d& p) const { return pixels.project(p); }
 };
 
 Projection make_projection(const CameraPose& camera, int width_px, int height_px) {
   assert(camera.near_m > 0.0);  // the clip below divides by depths >= near
-  Projection pr;
-  pr.near_m = camera.near_m;
-  pr.tan_y = std::tan(0.5 * camera.fovy_deg * kPi / 180.0);
-  pr.tan_x = pr.tan_y * camera.aspect;
-  pr.centre_x_px = 0.5 * width_px;
-  pr.centre_y_px = 0.5 * height_px;
-  pr.scale_x_px = 0.5 * width_px / pr.tan_x;
-  pr.scale_y_px = 0.5 * height_px / pr.tan_y;
-  return pr;
+  const Frustum frustum = camera.frustum();
+  return {camera.near_m, frustum.tan_x(), frustum.tan_y(),
+          PixelProjection(frustum, width_px, height_px)};
 }
 
 // Marks the pixels covered by one fragment's box, clipped at the near plane and projected, and
 // returns how many that box covers by itself.
 int rasterise(const Projection& pr, const CameraPose& camera, const FragmentState& f, int width_px,
               int height_px, std::uint8_t* coverage) {
-  // The box in camera coordinates: its centre and its three half axes (columns).
-  const Eigen::Vector3d c = camera.to_camera(f.position_m);
-  Eigen::Matrix3d axes;
-  for (int k = 0; k < 3; ++k) {
-    axes.col(k) = camera.dir_to_camera(f.rotation.col(k)) * f.half_extents_m[k];
-  }
+  const CameraBox box = camera_box(camera, f);
   // A non-finite state is reported by the simulation's own checks; it must not paint the screen.
-  if (!c.allFinite() || !axes.allFinite()) return 0;
+  if (!box.finite()) return 0;
+  const Eigen::Vector3d& c = box.centre_m;
+  const Eigen::Matrix3d& axes = box.half_axes_m;
 
   // Cheap culling: the box lies wholly on the outer side of the near plane or of a side plane
   // (n . p > d for all its points) when n . c - sum_k |n . axis_k| > d.
@@ -153,21 +136,11 @@ int rasterise(const Projection& pr, const CameraPose& camera, const FragmentStat
     return 0;
   }
 
-  // Corner i has the sign of axis k given by bit k of i.
-  std::array<Eigen::Vector3d, 8> corner;
-  for (int i = 0; i < 8; ++i) {
-    corner[i] = c;
-    for (int k = 0; k < 3; ++k) {
-      if (i & (1 << k)) {
-        corner[i] += axes.col(k);
-      } else {
-        corner[i] -= axes.col(k);
-      }
-    }
-  }
+  // Corner i and corner i | (1 << k) share the edge along axis k (CameraBox::corner).
+  const std::array<Eigen::Vector3d, 8> corner = box.corners();
   // The part with z >= near is the convex polytope spanned by the corners in front of the plane
   // and the points where the 12 edges cross it; its projection is the hull of theirs.
-  std::array<Point2, kMaxPoints> points;
+  std::array<ScreenPoint, kMaxPoints> points;
   int n = 0;
   for (int i = 0; i < 8; ++i) {
     if (corner[i].z() >= pr.near_m) points[n++] = pr.project(corner[i]);
@@ -189,7 +162,7 @@ int rasterise(const Projection& pr, const CameraPose& camera, const FragmentStat
     }
   }
   if (n == 0) return 0;
-  std::array<Point2, 2 * kMaxPoints> hull;
+  std::array<ScreenPoint, 2 * kMaxPoints> hull;
   const int h = convex_hull(points.data(), n, hull.data());
   return fill_hull(hull.data(), h, width_px, height_px, coverage);
 }

@@ -4,14 +4,6 @@
 
 namespace fragsim {
 
-Eigen::Vector3d camera_aligned_extents(const CameraPose& camera, const FragmentState& f) {
-  Eigen::Matrix3d to_cam;
-  to_cam.row(0) = camera.right.transpose();
-  to_cam.row(1) = camera.up.transpose();
-  to_cam.row(2) = camera.forward.transpose();
-  return (to_cam * f.rotation).cwiseAbs() * f.half_extents_m;
-}
-
 void LinearInterval::keep_nonpositive(double a, double b) {
   if (b == 0.0) {
     if (a > 0.0) {

@@ -1,19 +1,18 @@
 #pragma once
 // Swept overlap tests in camera coordinates. Between two snapshots a fragment's centre is taken to
 // move on the straight line between its camera-space positions, and its box is bounded by its
-// camera-aligned extents; every bound in the test is then linear in the step fraction s, so the
-// overlap interval is exact for that motion (a fast fragment cannot jump a thin target).
+// camera-aligned extents (geometry/camera_box.hpp); every bound in the test is then linear in the
+// step fraction s, so the overlap interval is exact for that motion (a fast fragment cannot jump a
+// thin target).
 
 #include <Eigen/Core>
 #include <optional>
 
+#include "geometry/camera_box.hpp"
 #include "geometry/camera_pose.hpp"
 #include "geometry/fragment_state.hpp"
 
 namespace fragsim {
-
-// Half extents along the camera's right, up and forward axes of a fragment's (rotated) box.
-Eigen::Vector3d camera_aligned_extents(const CameraPose& camera, const FragmentState& f);
 
 // The sub-interval [s0, s1] of [0, 1] on which  a + b s <= 0  holds for every constraint added.
 class LinearInterval {

@@ -8,6 +8,8 @@
 #include <cstddef>
 #include <optional>
 
+#include "geometry/camera_box.hpp"
+
 namespace fragsim {
 
 namespace {
@@ -108,7 +110,7 @@ void FrameRenderer::draw_background(Image& image, const CameraPose& camera) {
   // A ground pixel's footprint along the view grows as z^2 / (pixels per unit slope * height);
   // once it nears a checker square the squares would alias, so they fade to their mean.
   const double eye_height_m = std::max(std::abs(camera.eye_m.y() - ground_height_m_), 1e-3);
-  const double px_per_slope = 0.5 * r.height() / std::tan(0.5 * camera.fovy_deg * kPi / 180.0);
+  const double px_per_slope = r.projection().scale_y_px();
   const Eigen::Vector3d light(kGroundLight.r, kGroundLight.g, kGroundLight.b);
   const Eigen::Vector3d dark(kGroundDark.r, kGroundDark.g, kGroundDark.b);
   const Eigen::Vector3d mean = 0.5 * (light + dark);
@@ -153,62 +155,39 @@ void FrameRenderer::draw_background(Image& image, const CameraPose& camera) {
 
 namespace {
 
-// One fragment's box in camera coordinates.
-struct BoxView {
-  Eigen::Vector3d centre;
-  Eigen::Matrix3d dirs;  // the body axes (unit columns)
-  Eigen::Matrix3d axes;  // the half axes: dirs scaled by the half extents
-
-  // Whether face (k, s) (the one across +-axis k) faces the eye at the origin.
-  bool faces_eye(int k, double s) const {
-    return (s * dirs.col(k)).dot(centre + s * axes.col(k)) < 0.0;
-  }
-  // Corner i has the sign of axis k given by bit k of i.
-  Eigen::Vector3d corner(int i) const {
-    Eigen::Vector3d p = centre;
-    for (int k = 0; k < 3; ++k) p += ((i >> k) & 1 ? 1.0 : -1.0) * axes.col(k);
-    return p;
-  }
-};
+// Whether face (k, s) of the box (the one across +-axis k) faces the eye at the origin.
+bool faces_eye(const CameraBox& b, int k, double s) {
+  return (s * b.dirs.col(k)).dot(b.centre_m + s * b.half_axes_m.col(k)) < 0.0;
+}
 
 // The box seen from `cam`, or nothing when it cannot show: wholly before the near plane or beyond
 // the far one, wholly outside a side plane (by its bounding sphere), or not finite (the simulation
 // reports non-finite states itself; they must not paint the screen).
-std::optional<BoxView> view_box(const CameraPose& cam, const FragmentState& f) {
-  BoxView b;
-  b.centre = cam.to_camera(f.position_m);
-  for (int k = 0; k < 3; ++k) b.dirs.col(k) = cam.dir_to_camera(f.rotation.col(k));
-  b.axes = b.dirs * f.half_extents_m.asDiagonal();
-  if (!b.centre.allFinite() || !b.axes.allFinite()) return std::nullopt;
-  const Eigen::Vector3d& c = b.centre;
-  const double r = f.half_extents_m.norm();
-  if (c.z() + r < cam.near_m || c.z() - r > cam.far_m) return std::nullopt;
-  const double tan_y = std::tan(0.5 * cam.fovy_deg * kPi / 180.0);
-  const double tan_x = tan_y * cam.aspect;
-  if ((std::abs(c.x()) - tan_x * c.z()) / std::sqrt(1.0 + tan_x * tan_x) > r ||
-      (std::abs(c.y()) - tan_y * c.z()) / std::sqrt(1.0 + tan_y * tan_y) > r) {
-    return std::nullopt;
-  }
+std::optional<CameraBox> view_box(const CameraPose& cam, const FragmentState& f) {
+  const CameraBox b = camera_box(cam, f);
+  if (!b.finite()) return std::nullopt;
+  if (!cam.frustum().sphere_may_show(b.centre_m, f.half_extents_m.norm())) return std::nullopt;
   return b;
 }
 
 }  // namespace
 
 void FrameRenderer::draw_faces(int index, const FragmentState& f) {
-  const std::optional<BoxView> box = view_box(raster_.camera(), f);
+  const std::optional<CameraBox> box = view_box(raster_.camera(), f);
   if (!box) return;
   const Rgb base = fragment_colour(index);
   for (int k = 0; k < 3; ++k) {
     const int u = (k + 1) % 3;
     const int v = (k + 2) % 3;
     for (const double s : {-1.0, 1.0}) {
-      if (!box->faces_eye(k, s)) continue;  // back faces are culled
+      if (!faces_eye(*box, k, s)) continue;  // back faces are culled
       const Rgb shade = shaded_colour(base, s * f.rotation.col(k));
-      const Eigen::Vector3d fc = box->centre + s * box->axes.col(k);
-      const Eigen::Vector3d p0 = fc - box->axes.col(u) - box->axes.col(v);
-      const Eigen::Vector3d p1 = fc + box->axes.col(u) - box->axes.col(v);
-      const Eigen::Vector3d p2 = fc + box->axes.col(u) + box->axes.col(v);
-      const Eigen::Vector3d p3 = fc - box->axes.col(u) + box->axes.col(v);
+      const Eigen::Matrix3d& axes = box->half_axes_m;
+      const Eigen::Vector3d fc = box->centre_m + s * axes.col(k);
+      const Eigen::Vector3d p0 = fc - axes.col(u) - axes.col(v);
+      const Eigen::Vector3d p1 = fc + axes.col(u) - axes.col(v);
+      const Eigen::Vector3d p2 = fc + axes.col(u) + axes.col(v);
+      const Eigen::Vector3d p3 = fc - axes.col(u) + axes.col(v);
       raster_.fill_triangle(p0, p1, p2, shade);
       raster_.fill_triangle(p0, p2, p3, shade);
     }
@@ -216,7 +195,7 @@ void FrameRenderer::draw_faces(int index, const FragmentState& f) {
 }
 
 void FrameRenderer::draw_outline(const FragmentState& f) {
-  const std::optional<BoxView> box = view_box(raster_.camera(), f);
+  const std::optional<CameraBox> box = view_box(raster_.camera(), f);
   if (!box) return;
   // The edges of the visible faces: the edge along axis k from corner i is where the faces across
   // axes u and v (on i's sides) meet; it shows when either faces the eye.
@@ -225,8 +204,8 @@ void FrameRenderer::draw_outline(const FragmentState& f) {
       if ((i >> k) & 1) continue;  // each edge once, from its corner with bit k clear
       const int u = (k + 1) % 3;
       const int v = (k + 2) % 3;
-      if (box->faces_eye(u, (i >> u) & 1 ? 1.0 : -1.0) ||
-          box->faces_eye(v, (i >> v) & 1 ? 1.0 : -1.0)) {
+      if (faces_eye(*box, u, (i >> u) & 1 ? 1.0 : -1.0) ||
+          faces_eye(*box, v, (i >> v) & 1 ? 1.0 : -1.0)) {
         raster_.draw_segment(box->corner(i), box->corner(i | (1 << k)), kCandidateColour, line_px_);
       }
     }
@@ -235,12 +214,11 @@ void FrameRenderer::draw_outline(const FragmentState& f) {
 
 void FrameRenderer::draw_cut(Image& image, const FragmentState& f) {
   const CameraPose& cam = raster_.camera();
-  const std::optional<BoxView> box = view_box(cam, f);
+  const std::optional<CameraBox> box = view_box(cam, f);
   if (!box) return;
   // The near plane's section through the box: where its 12 edges cross z = near, in angular order
   // around their mean (the section is convex).
-  std::array<Eigen::Vector3d, 8> corner;
-  for (int i = 0; i < 8; ++i) corner[i] = box->corner(i);
+  const std::array<Eigen::Vector3d, 8> corner = box->corners();
   std::array<ScreenPoint, 12> pts;
   int n = 0;
   for (int i = 0; i < 8; ++i) {

@@ -77,12 +77,7 @@ void Rasterizer::begin(Image& image, const CameraPose& camera) {
   camera_ = camera;
   width_ = image.width();
   height_ = image.height();
-  const double tan_y = std::tan(0.5 * camera.fovy_deg * kPi / 180.0);
-  const double tan_x = tan_y * camera.aspect;
-  centre_x_ = 0.5 * width_;
-  centre_y_ = 0.5 * height_;
-  scale_x_ = 0.5 * width_ / tan_x;
-  scale_y_ = 0.5 * height_ / tan_y;
+  projection_ = PixelProjection(camera.frustum(), width_, height_);
   inverse_depth_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0.0f);
 }
 

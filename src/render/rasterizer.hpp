@@ -17,14 +17,10 @@
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
+#include "geometry/frustum.hpp"
 #include "render/image.hpp"
 
 namespace fragsim {
-
-struct ScreenPoint {
-  double x = 0.0;  // pixels from the left edge
-  double y = 0.0;  // pixels from the top edge
-};
 
 // Sutherland-Hodgman against one plane z = plane_z: keeps the part of the convex polygon
 // in[0..n) with z >= plane_z (keep_greater) or z <= plane_z, in order; points made on the plane
@@ -43,13 +39,13 @@ class Rasterizer {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // A camera-space point with z > 0 on the screen (perspective divide and viewport).
-  ScreenPoint project(const Eigen::Vector3d& p) const {
-    return {centre_x_ + scale_x_ * p.x() / p.z(), centre_y_ - scale_y_ * p.y() / p.z()};
-  }
+  // The frame's perspective divide and viewport.
+  const PixelProjection& projection() const { return projection_; }
+  // A camera-space point with z > 0 on the screen.
+  ScreenPoint project(const Eigen::Vector3d& p) const { return projection_.project(p); }
   // The camera-space direction (x / z, y / z, 1) through the centre of pixel (col, row).
   Eigen::Vector3d pixel_direction(int col, int row) const {
-    return {(col + 0.5 - centre_x_) / scale_x_, (centre_y_ - (row + 0.5)) / scale_y_, 1.0};
+    return projection_.pixel_direction(col, row);
   }
 
   // Clips the camera-space triangle at the near and far planes and fills what is left, each
@@ -86,10 +82,7 @@ class Rasterizer {
   CameraPose camera_;
   int width_ = 0;
   int height_ = 0;
-  double centre_x_ = 0.0;
-  double centre_y_ = 0.0;
-  double scale_x_ = 0.0;              // pixels per unit of x / z
-  double scale_y_ = 0.0;              // pixels per unit of y / z
+  PixelProjection projection_;
   std::vector<float> inverse_depth_;  // reused from frame to frame
 };
 

@@ -67,29 +67,18 @@ constexpr int kMaxContactsPerPair = 4;
 // Slack added to the distance within which the camera (or its wall) wakes a culled fragment.
 constexpr double kWakeMargin_m = 0.05;
 
-// The camera's view volume, to tell whether a sphere may be seen: not wholly behind the eye,
-// beyond the far plane or outside one of the four side planes. The near plane is left out on
-// purpose: the near-plane strategy moves it.
+// The camera's view volume, to tell whether a sphere may be seen. The near plane is left out on
+// purpose (the sphere is only tested against the eye): the near-plane strategy moves it.
 class ViewVolume {
  public:
-  explicit ViewVolume(const CameraPose& pose) : pose_(pose) {
-    ty_ = std::tan(0.5 * pose.fovy_deg * kPi / 180.0);
-    tx_ = pose.aspect * ty_;
-    nx_ = std::sqrt(1.0 + tx_ * tx_);
-    ny_ = std::sqrt(1.0 + ty_ * ty_);
-  }
+  explicit ViewVolume(const CameraPose& pose) : pose_(pose), frustum_(pose.frustum()) {}
   bool may_see(const Eigen::Vector3d& centre_m, double radius_m) const {
-    const Eigen::Vector3d c = pose_.to_camera(centre_m);  // x right, y up, z depth
-    if (c.z() + radius_m < 0.0 || c.z() - radius_m > pose_.far_m) return false;
-    // Signed distance from a side plane through the eye, e.g. (|x| - tx z) / sqrt(1 + tx^2).
-    if ((std::abs(c.x()) - tx_ * c.z()) / nx_ > radius_m) return false;
-    return (std::abs(c.y()) - ty_ * c.z()) / ny_ <= radius_m;
+    return frustum_.sphere_may_show(pose_.to_camera(centre_m), radius_m, 0.0);
   }
 
  private:
   CameraPose pose_;
-  double tx_ = 0.0, ty_ = 0.0;  // tangents of the half angles across and up
-  double nx_ = 0.0, ny_ = 0.0;  // lengths of the side planes' unnormalised normals
+  Frustum frustum_;
 };
 
 }  // namespace

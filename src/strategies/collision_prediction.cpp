@@ -18,9 +18,10 @@ BallisticPath predicted_path(const FragmentState& f, const Eigen::Vector3d& g_mp
 double time_to_horizon(const BallisticPath& path, double y_ref_m, double fallback_s) {
   if (!std::isfinite(y_ref_m)) return fallback_s;  // horizon = ground without a ground
   // y(tau) - y_ref = a tau^2 + b tau + c with a = g_y / 2.
-  const double a = 0.5 * path.g_mps2.y();
-  const double b = path.v0_mps.y();
-  const double c = path.p0_m.y() - y_ref_m;
+  const AxisQuadratic y = path.axis(1);
+  const double a = y.c2;
+  const double b = y.c1;
+  const double c = y.c0 - y_ref_m;
   double later = -1.0;
   if (a != 0.0) {
     const double disc = b * b - 4.0 * a * c;
@@ -41,9 +42,10 @@ double time_to_horizon(const BallisticPath& path, double y_ref_m, double fallbac
 
 Quartic ball_contact_quartic(const BallisticPath& path, const Eigen::Vector3d& centre_m,
                              double r0_m, double growth_mps) {
-  const Eigen::Vector3d d = path.p0_m - centre_m;
-  const Eigen::Vector3d& v = path.v0_mps;
-  const Eigen::Vector3d a = 0.5 * path.g_mps2;
+  const BallisticPath rel = path.relative_to(centre_m);
+  const Eigen::Vector3d& d = rel.p0_m;
+  const Eigen::Vector3d& v = rel.v0_mps;
+  const Eigen::Vector3d a = rel.half_accel_mps2();
   return {d.dot(d) - r0_m * r0_m, 2.0 * d.dot(v) - 2.0 * r0_m * growth_mps,
           v.dot(v) + 2.0 * d.dot(a) - growth_mps * growth_mps, 2.0 * v.dot(a), a.dot(a)};
 }
@@ -62,8 +64,10 @@ BallSize ball_size(const ReachModel& model, double t_horizon_s) {
   return {model.radius_m, model.max_speed_mps};
 }
 
+// cheap_rejection's own form of the relative path stores half the acceleration.
 RelativePath relative_to(const BallisticPath& path, const Eigen::Vector3d& centre_m) {
-  return {path.p0_m - centre_m, path.v0_mps, 0.5 * path.g_mps2};
+  const BallisticPath rel = path.relative_to(centre_m);
+  return {rel.p0_m, rel.v0_mps, rel.half_accel_mps2()};
 }
 
 }  // namespace
@@ -95,7 +99,7 @@ ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d
   // could call it a touch).
   const double horizon_s = std::max(t_horizon_s, 0.0);
   const double closest_m = (path.p0_m - camera_m).norm() - path.v0_mps.norm() * horizon_s -
-                           0.5 * path.g_mps2.norm() * horizon_s * horizon_s;
+                           0.5 * path.accel_mps2.norm() * horizon_s * horizon_s;
   if (closest_m > r0 + growth * horizon_s) return out;
   const auto t =
       first_nonpositive(ball_contact_quartic(path, camera_m, r0, growth), 0.0, t_horizon_s);
@@ -204,16 +208,14 @@ std::optional<Eigen::Vector2d> near_plane_crossing(const BallisticPath& path,
                                                    const CameraPose& camera,
                                                    const Eigen::Vector3d& camera_velocity_mps,
                                                    double horizon_s) {
-  const Eigen::Vector3d d = camera.to_camera(path.p0_m);
-  const Eigen::Vector3d w = camera.dir_to_camera(path.v0_mps - camera_velocity_mps);
-  const Eigen::Vector3d a = 0.5 * camera.dir_to_camera(path.g_mps2);
-  if (d.z() <= camera.near_m) return std::nullopt;  // already at or behind the near plane
+  const BallisticPath rel = in_camera_frame(path, camera, camera_velocity_mps);
+  const AxisQuadratic depth_m = rel.axis(2);
+  if (depth_m.c0 <= camera.near_m) return std::nullopt;  // already at or behind the near plane
   // depth(tau) - near <= 0 first happens at the crossing.
-  const Quartic depth{d.z() - camera.near_m, w.z(), a.z(), 0.0, 0.0};
+  const Quartic depth{depth_m.c0 - camera.near_m, depth_m.c1, depth_m.c2, 0.0, 0.0};
   const auto tau = first_nonpositive(depth, 0.0, horizon_s);
   if (!tau) return std::nullopt;
-  const double s = *tau;
-  return Eigen::Vector2d(d.x() + w.x() * s + a.x() * s * s, d.y() + w.y() * s + a.y() * s * s);
+  return rel.at(*tau).head<2>();
 }
 
 Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Vector2d& point) {
@@ -292,9 +294,10 @@ Eigen::Vector3d crossing_edge_direction(const BallisticPath& path, const CameraP
                                         double horizon_s, const Eigen::Vector3d& now_m,
                                         double half_width_m, double half_height_m) {
   // The same quantities near_plane_crossing computes.
-  const Eigen::Vector3d d = camera.to_camera(path.p0_m);
-  const Eigen::Vector3d w = camera.dir_to_camera(path.v0_mps - camera_velocity_mps);
-  const Eigen::Vector3d a = 0.5 * camera.dir_to_camera(path.g_mps2);
+  const BallisticPath rel = in_camera_frame(path, camera, camera_velocity_mps);
+  const Eigen::Vector3d& d = rel.p0_m;
+  const Eigen::Vector3d& w = rel.v0_mps;
+  const Eigen::Vector3d a = rel.half_accel_mps2();
   const auto exact = [&]() {
     Eigen::Vector2d screen;
     if (auto crossing = near_plane_crossing(path, camera, camera_velocity_mps, horizon_s)) {
@@ -314,8 +317,9 @@ Eigen::Vector3d crossing_edge_direction(const BallisticPath& path, const CameraP
   if (root.kind == Crossing::kDoubt) return exact();
   // The crossing point, and how far the solver's could lie from it.
   const double s = root.tau_s;
-  const double x = d.x() + w.x() * s + a.x() * s * s;
-  const double y = d.y() + w.y() * s + a.y() * s * s;
+  const Eigen::Vector3d at_s = rel.at(s);
+  const double x = at_s.x();
+  const double y = at_s.y();
   const double reach_s = s + root.error_s;
   const double error_x = (std::abs(w.x()) + 2.0 * std::abs(a.x()) * reach_s) * root.error_s +
                          kGuard * (std::abs(d.x()) + std::abs(w.x()) * s + std::abs(a.x()) * s * s);

@@ -8,23 +8,17 @@
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
+#include "geometry/first_root.hpp"
 #include "geometry/fragment_state.hpp"
+#include "geometry/parabola.hpp"
 #include "strategies/cheap_rejection.hpp"
-#include "strategies/first_root.hpp"
 #include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 
-// P(tau) = p0 + v0 tau + g tau^2 / 2, tau measured from now.
-struct BallisticPath {
-  Eigen::Vector3d p0_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d v0_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d g_mps2 = Eigen::Vector3d::Zero();
-
-  Eigen::Vector3d at(double tau_s) const {
-    return p0_m + v0_mps * tau_s + 0.5 * g_mps2 * tau_s * tau_s;
-  }
-};
+// P(tau) = p0 + v0 tau + g tau^2 / 2, tau measured from now: the geometry's parabola, whose
+// acceleration is gravity here.
+using BallisticPath = Parabola;
 
 // The path the predictor believes in. `discrete` uses V + g dt/2: ODE's semi-implicit Euler puts
 // positions at step times exactly on that parabola.

@@ -2,14 +2,14 @@
 
 #include <cmath>
 
+#include "geometry/frustum.hpp"
+
 namespace fragsim {
 
 WallStrategy::WallStrategy(const WallParams& params, double fovy_deg, double aspect) {
   // Sized to the frustum's cross-section at the wall's far face, so no fragment reaches the near
-  // plane around its rim.
-  CameraPose frustum;
-  frustum.fovy_deg = fovy_deg;
-  frustum.aspect = aspect;
+  // plane around its rim. The near and far planes do not enter the cross-section.
+  const Frustum frustum(fovy_deg, aspect, 0.0, 0.0);
   const double far_face_m = params.distance_m + 0.5 * params.thickness_m;
   spec_.distance_m = params.distance_m;
   spec_.thickness_m = params.thickness_m;

@@ -40,7 +40,7 @@
 #include <optional>
 #include <vector>
 
-#include "strategies/first_root.hpp"
+#include "geometry/first_root.hpp"
 
 namespace {
 

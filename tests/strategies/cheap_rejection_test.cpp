@@ -14,8 +14,8 @@
 #include <random>
 #include <vector>
 
+#include "geometry/first_root.hpp"
 #include "strategies/collision_prediction.hpp"
-#include "strategies/first_root.hpp"
 
 namespace fragsim {
 namespace {
@@ -123,7 +123,7 @@ struct BallCase {
   double t_end = 0.0;
 };
 
-// Random paths and balls over many scales (as tests/strategies/first_root_reference_test.cpp), then
+// Random paths and balls over many scales (as tests/geometry/first_root_reference_test.cpp), then
 // moved so that the path grazes the ball, starts on it or reaches it at the horizon, within
 // +-1e-13..1e-1 m (family 0 leaves them random).
 BallCase random_ball_case(std::mt19937_64& rng, int family) {
@@ -151,7 +151,7 @@ BallCase random_ball_case(std::mt19937_64& rng, int family) {
   if (family == 1) {
     // At t*, the distance is stationary relative to the growing radius and R(t*) + delta.
     const double ts = k.t_end * u(rng);
-    const Eigen::Vector3d vel = path.v0_mps + path.g_mps2 * ts;
+    const Eigen::Vector3d vel = path.v0_mps + path.accel_mps2 * ts;
     if (vel.norm() > k.growth) {
       const Eigen::Vector3d along = vel.normalized();
       Eigen::Vector3d side = random_unit(rng);
@@ -165,7 +165,7 @@ BallCase random_ball_case(std::mt19937_64& rng, int family) {
   } else if (family == 3) {
     centre = path.at(k.t_end) - (k.r0 + k.growth * k.t_end + delta) * random_unit(rng);
   }
-  k.path = {path.p0_m - centre, path.v0_mps, 0.5 * path.g_mps2};
+  k.path = {path.p0_m - centre, path.v0_mps, 0.5 * path.accel_mps2};
   return k;
 }
 

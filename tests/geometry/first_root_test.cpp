@@ -1,4 +1,4 @@
-#include "strategies/first_root.hpp"
+#include "geometry/first_root.hpp"
 
 #include <gtest/gtest.h>
 

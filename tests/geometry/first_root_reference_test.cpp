@@ -24,8 +24,8 @@
 #include <unsupported/Eigen/Polynomials>
 #include <vector>
 
+#include "geometry/first_root.hpp"
 #include "strategies/collision_prediction.hpp"
-#include "strategies/first_root.hpp"
 
 namespace fragsim {
 namespace {
@@ -544,9 +544,10 @@ struct Brute {
   std::array<LD, 3> rel(LD t) const {  // P(t) - C
     std::array<LD, 3> q{};
     for (int i = 0; i < 3; ++i) {
-      q[static_cast<std::size_t>(i)] =
-          static_cast<LD>(k.path.p0_m[i]) - static_cast<LD>(k.centre[i]) +
-          static_cast<LD>(k.path.v0_mps[i]) * t + 0.5L * static_cast<LD>(k.path.g_mps2[i]) * t * t;
+      q[static_cast<std::size_t>(i)] = static_cast<LD>(k.path.p0_m[i]) -
+                                       static_cast<LD>(k.centre[i]) +
+                                       static_cast<LD>(k.path.v0_mps[i]) * t +
+                                       0.5L * static_cast<LD>(k.path.accel_mps2[i]) * t * t;
     }
     return q;
   }
@@ -559,7 +560,7 @@ struct Brute {
   LD speed(LD t) const {
     LD s = 0.0L;
     for (int i = 0; i < 3; ++i) {
-      const LD w = static_cast<LD>(k.path.v0_mps[i]) + static_cast<LD>(k.path.g_mps2[i]) * t;
+      const LD w = static_cast<LD>(k.path.v0_mps[i]) + static_cast<LD>(k.path.accel_mps2[i]) * t;
       s += w * w;
     }
     return std::sqrt(s);
@@ -569,7 +570,7 @@ struct Brute {
   Verdict decide(LD t0, LD t1) {
     constexpr int kGrid = 64;
     constexpr long kBudget = 2000000;
-    const LD g = static_cast<LD>(k.path.g_mps2.norm());
+    const LD g = static_cast<LD>(k.path.accel_mps2.norm());
     struct Cell {
       LD a, b, da, db;
     };
@@ -618,7 +619,7 @@ struct Brute {
 LD resolution(const Contact& k) {
   const LD t = k.horizon;
   const LD s = (k.path.p0_m - k.centre).norm() + k.path.v0_mps.norm() * t +
-               0.5L * k.path.g_mps2.norm() * t * t;
+               0.5L * k.path.accel_mps2.norm() * t * t;
   const LD r = k.r0 + k.growth * t;
   return 8.0L * kEps * (s * s + r * r) / k.r0;
 }
@@ -645,9 +646,10 @@ void classify(const Contact& k, ClassStats& stats) {
   }
   const bool entry = v == Verdict::kEntry;
   EXPECT_EQ(t.has_value(), entry) << "p0 " << k.path.p0_m.transpose() << " v "
-                                  << k.path.v0_mps.transpose() << " g " << k.path.g_mps2.transpose()
-                                  << " C " << k.centre.transpose() << " r0 " << k.r0 << " growth "
-                                  << k.growth << " tG " << k.horizon;
+                                  << k.path.v0_mps.transpose() << " g "
+                                  << k.path.accel_mps2.transpose() << " C " << k.centre.transpose()
+                                  << " r0 " << k.r0 << " growth " << k.growth << " tG "
+                                  << k.horizon;
   if (t.has_value() != entry) return;
   ++stats.agreements;
   if (!entry) return;
@@ -681,9 +683,9 @@ TEST(FirstRootReference, BallContactMatchesBruteForce) {
                                   : Eigen::Vector3d(log_uniform(-1, 1.6) * random_unit(rng));
     const double gravity = u(rng);
     if (gravity < 0.5) {
-      k.path.g_mps2 = Eigen::Vector3d(0.0, -9.81, 0.0);
+      k.path.accel_mps2 = Eigen::Vector3d(0.0, -9.81, 0.0);
     } else if (gravity < 0.8) {
-      k.path.g_mps2 = 20.0 * u(rng) * random_unit(rng);
+      k.path.accel_mps2 = 20.0 * u(rng) * random_unit(rng);
     }
     k.r0 = log_uniform(-1.7, 1);
     k.growth = u(rng) < 0.5 ? 0.0 : 10.0 * u(rng);
@@ -705,7 +707,7 @@ TEST(FirstRootReference, BallContactMatchesBruteForce) {
         // A point t* where the distance is stationary relative to the growing radius, at
         // distance R(t*) + delta: P(t*) - C = rho dir with dir . P'(t*) = growth makes D'(t*) = R'.
         const double ts = k.horizon * u(rng);
-        const Eigen::Vector3d vel = k.path.v0_mps + k.path.g_mps2 * ts;
+        const Eigen::Vector3d vel = k.path.v0_mps + k.path.accel_mps2 * ts;
         if (vel.norm() <= k.growth) continue;
         const Eigen::Vector3d along = vel.normalized();
         Eigen::Vector3d side = random_unit(rng);

@@ -1,0 +1,47 @@
+#pragma once
+// Real roots of small polynomials on an interval, found by isolating monotone pieces between the
+// roots of the derivative (recursively) and solving each sign change by Newton's method inside
+// the bracket. Unlike the closed-form quartic formulas this keeps double roots (a path tangent to
+// the ball) and clustered roots.
+//
+// Accuracy: p is evaluated by Horner's rule, whose error is at most ~4 eps size(x), size(x) =
+// sum |c_k| |x|^k; a root is found to within what that error allows: a simple root to about
+// 8 eps size / |p'|, a root of multiplicity m to about (8 eps size / |p^(m) / m!|)^(1/m), plus an
+// ulp. Where Horner's form would overflow (|x| or the coefficients near the top of the double
+// range) p is evaluated as p(x) / x^d instead. tests/geometry/first_root_reference_test.cpp checks
+// it against a long-double companion-matrix reference.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace fragsim {
+
+// c[0] + c[1] x + ... + c[4] x^4; higher unused coefficients are zero.
+using Quartic = std::array<double, 5>;
+
+// Horner's rule, as is.
+double evaluate(const Quartic& c, double x);
+
+// Every real root in [lo, hi], ascending. A root of even multiplicity (the polynomial touches zero
+// without crossing) is reported when |p| there is within rounding of zero (4 eps size), and once.
+// Nothing when lo > hi or an input is not finite.
+std::vector<double> real_roots(const Quartic& c, double lo, double hi);
+
+// real_roots without allocating, for hot loops: the same roots in a fixed array.
+struct RootList {
+  std::array<double, 8> x{};  // room for every root the search can report
+  std::size_t n = 0;
+  const double* begin() const { return x.data(); }
+  const double* end() const { return x.data() + n; }
+};
+RootList list_real_roots(const Quartic& c, double lo, double hi);
+
+// The smallest x in [lo, hi] with p(x) <= 0 (lo itself if p(lo) <= 0), or nothing if p > 0 on
+// the whole interval. "p <= 0" is judged with a tolerance of 4 eps size(x), so a tangent touch
+// counts. Nothing when lo > hi or an input is not finite (the caller's state checks report that).
+// Allocation-free; a Bernstein-coefficient test settles most paths that stay clear of the ball
+// without a search.
+std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi);
+
+}  // namespace fragsim
