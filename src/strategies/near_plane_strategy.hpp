@@ -3,8 +3,8 @@
 // minimum, so that approaching fragments are not cut (thesis fig. 2.6). The cost is depth
 // precision, reported as the depth step z^2 / (n 2^b) at a reference distance.
 
+#include "strategies/near_plane_params.hpp"
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 
