@@ -159,7 +159,10 @@ typedef struct fragsim_deflect_all_def {
 } fragsim_deflect_all_def;
 
 /* Settings of one controller. Must be initialised with fragsim_default_controller_def(), then
- * changed field by field; fragsim_controller_create refuses a def that was not. */
+ * changed field by field; fragsim_controller_create refuses a def that was not. Each number must
+ * keep the range of fragsim's scene key of the same meaning (data/scenes/README.md: edge-min.*,
+ * edge.*, deflect-all.*; e.g. a_max_mps2 in [0, 1e9], horizon_cap_s in (0, 3600]); otherwise
+ * fragsim_controller_create names the field and the rule. */
 typedef struct fragsim_controller_def {
   fragsim_strategy strategy; /* default FRAGSIM_STRATEGY_EDGE_MIN */
   fragsim_edge_min_def edge_min;

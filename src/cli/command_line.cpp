@@ -24,7 +24,9 @@ ParsedCommand parse_command(const std::string& command, const std::vector<std::s
     throw UsageError(e.what());
   }
   if (p.options.count("help")) {
-    std::cout << "usage: fragsim " << command << " [options]\n" << all << '\n';
+    std::cout << "usage: fragsim " << command << " [options]\n"
+              << all << '\n'
+              << describe_strategies(strategy_table()) << '\n';
     p.help_shown = true;
     return p;
   }

@@ -22,6 +22,7 @@
 #include "metrics/trajectory_writer.hpp"
 #include "report/csv_export.hpp"
 #include "report/html_report.hpp"
+#include "settings/input_error.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 
@@ -64,7 +65,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   for (const std::string& n : names) {
     try {
       make_strategy(n, p.scene);
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
       throw UsageError(std::string("--strategies: ") + e.what());
     }
   }
@@ -149,7 +150,7 @@ int dump_control(const cli::ParsedCommand& p, const std::string& strategy) {
   }
   try {
     make_strategy(strategy, p.scene);
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     throw UsageError(std::string("--strategy: ") + e.what());
   }
   ControlDump dump(path, strategy, p.scene);
@@ -165,8 +166,8 @@ int dump_control(const cli::ParsedCommand& p, const std::string& strategy) {
 
 int cmd_run(const std::vector<std::string>& args) {
   po::options_description own("run options");
-  own.add_options()("strategy", po::value<std::string>()->default_value("edge"),
-                    "none | wall | deflect-all | near-plane | edge | edge-min");
+  const std::string names = join_strategy_names(strategy_table(), " | ");
+  own.add_options()("strategy", po::value<std::string>()->default_value("edge"), names.c_str());
   add_output_options(own);
   own.add_options()("dump-control", po::value<std::string>()->value_name("FILE"),
                     "only run the strategy (edge-min, edge or deflect-all) and write, per step, "
@@ -181,8 +182,7 @@ int cmd_run(const std::vector<std::string>& args) {
 
 int cmd_compare(const std::vector<std::string>& args) {
   po::options_description own("compare options");
-  std::string all_names;
-  for (const std::string& n : strategy_names()) all_names += (all_names.empty() ? "" : ",") + n;
+  const std::string all_names = join_strategy_names(strategy_table(), ",");
   own.add_options()("strategies", po::value<std::string>()->default_value(all_names),
                     "comma-separated strategies to compare");
   add_output_options(own);

@@ -10,6 +10,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,42 +85,91 @@ int raw(const E& e) {
   return v;
 }
 
+// The def's strategy parameters as the tool's parameter structs. The enums are converted as they
+// are: validate() refuses a def whose enums are out of range before anything reads them.
+fragsim::EdgeMinParams edge_min_params(const fragsim_controller_def& d) {
+  fragsim::EdgeMinParams p;
+  p.margin_m = d.edge_min.margin_m;
+  p.a_max_mps2 = d.edge_min.a_max_mps2;
+  p.camera_model = static_cast<fragsim::CameraModel>(raw(d.edge_min.camera_model));
+  p.camera_accel_mps2 = d.edge_min.camera_accel_mps2;
+  p.camera_turn_degps = d.edge_min.camera_turn_degps;
+  p.horizon_cap_s = d.horizon_cap_s;
+  p.max_solves = d.edge_min.max_solves;
+  return p;
+}
+
+fragsim::EdgeParams edge_params(const fragsim_controller_def& d) {
+  fragsim::EdgeParams p;
+  p.k = d.edge.k_Nms2;
+  p.a_max_mps2 = d.edge.a_max_mps2;
+  p.predictor = static_cast<fragsim::Predictor>(raw(d.edge.predictor));
+  p.reach = static_cast<fragsim::Reach>(raw(d.edge.reach));
+  p.horizon = static_cast<fragsim::Horizon>(raw(d.edge.horizon));
+  p.replan = static_cast<fragsim::Replan>(raw(d.edge.replan));
+  p.horizon_cap_s = d.horizon_cap_s;
+  return p;
+}
+
+fragsim::DeflectAllParams deflect_all_params(const fragsim_controller_def& d) {
+  fragsim::DeflectAllParams p;
+  p.accel_mps2 = d.deflect_all.accel_mps2;
+  p.range_m = d.deflect_all.range_m;
+  return p;
+}
+
+// A def field that is one of the tool's parameters, checked by that parameter's own key (the
+// range a scene file's value must keep) and named by its C field. The fields are listed here,
+// not taken from the keys, because the C names differ (edge.k_Nms2, one horizon_cap_s for both
+// strategies) and the C struct cannot be reflected on.
+template <class Params>
+Failure check_key(const fragsim::ParamSpec<Params>& spec, const char* key, const Params& p,
+                  const char* field) {
+  for (const fragsim::settings::Key<Params>& k : spec.keys) {
+    if (k.name != key) continue;
+    if (const std::optional<std::string> rule = k.broken(p)) {
+      return fail(FRAGSIM_ERROR_INVALID_ARGUMENT, "%s = %s: %s", field, k.format(p).c_str(),
+                  rule->c_str());
+    }
+    return {};
+  }
+  return fail(FRAGSIM_ERROR_INTERNAL, "internal: %s has no key %s", field, key);
+}
+
 Failure validate(const fragsim_controller_def& def) {
   if (def.internal_value != kDefCookie) {
     return fail(FRAGSIM_ERROR_DEF_NOT_DEFAULTED,
                 "def: not initialised with fragsim_default_controller_def()");
   }
   Failure f;
-  if ((f = check(def.edge_min.max_solves >= 0, "edge_min.max_solves", def.edge_min.max_solves,
-                 "must be >= 0 (0: no cap)"))) {
-    return f;
-  }
-  if ((f = check(def.horizon_cap_s > 0.0 && std::isfinite(def.horizon_cap_s), "horizon_cap_s",
-                 def.horizon_cap_s, "must be finite and > 0"))) {
+  // The shared fields first, whichever strategy is chosen: a def is valid as a whole.
+  const auto& em_keys = fragsim::edge_min_param_spec();
+  const fragsim::EdgeMinParams em = edge_min_params(def);
+  if ((f = check_key(em_keys, "max_solves", em, "edge_min.max_solves")) ||
+      (f = check_key(em_keys, "horizon_cap_s", em, "horizon_cap_s"))) {
     return f;
   }
   switch (raw(def.strategy)) {
     case FRAGSIM_STRATEGY_EDGE_MIN: {
       const fragsim_edge_min_def& p = def.edge_min;
-      if ((f = check(nonnegative(p.margin_m), "edge_min.margin_m", p.margin_m, "must be >= 0")) ||
-          (f = check(nonnegative(p.a_max_mps2), "edge_min.a_max_mps2", p.a_max_mps2,
-                     "must be >= 0")) ||
+      if ((f = check_key(em_keys, "margin_m", em, "edge_min.margin_m")) ||
+          (f = check_key(em_keys, "a_max_mps2", em, "edge_min.a_max_mps2")) ||
           (f = check(raw(p.camera_model) >= FRAGSIM_CAMERA_CONSTANT &&
                          raw(p.camera_model) <= FRAGSIM_CAMERA_REACHABLE,
                      "edge_min.camera_model", raw(p.camera_model),
                      "must be a fragsim_camera_model")) ||
-          (f = check(nonnegative(p.camera_accel_mps2), "edge_min.camera_accel_mps2",
-                     p.camera_accel_mps2, "must be >= 0")) ||
-          (f = check(nonnegative(p.camera_turn_degps), "edge_min.camera_turn_degps",
-                     p.camera_turn_degps, "must be >= 0"))) {
+          (f = check_key(em_keys, "camera_accel_mps2", em, "edge_min.camera_accel_mps2")) ||
+          (f = check_key(em_keys, "camera_turn_degps", em, "edge_min.camera_turn_degps"))) {
         return f;
       }
       return {};
     }
     case FRAGSIM_STRATEGY_EDGE: {
       const fragsim_edge_def& p = def.edge;
-      if ((f = check(nonnegative(p.k_Nms2), "edge.k_Nms2", p.k_Nms2, "must be >= 0")) ||
-          (f = check(nonnegative(p.a_max_mps2), "edge.a_max_mps2", p.a_max_mps2, "must be >= 0")) ||
+      const auto& keys = fragsim::edge_param_spec();
+      const fragsim::EdgeParams e = edge_params(def);
+      if ((f = check_key(keys, "k", e, "edge.k_Nms2")) ||
+          (f = check_key(keys, "a_max_mps2", e, "edge.a_max_mps2")) ||
           (f = check(raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_THESIS ||
                          raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_DISCRETE,
                      "edge.predictor", raw(p.predictor), "must be a fragsim_edge_predictor")) ||
@@ -137,10 +187,10 @@ Failure validate(const fragsim_controller_def& def) {
       return {};
     }
     case FRAGSIM_STRATEGY_DEFLECT_ALL: {
-      const fragsim_deflect_all_def& p = def.deflect_all;
-      if ((f = check(nonnegative(p.accel_mps2), "deflect_all.accel_mps2", p.accel_mps2,
-                     "must be >= 0")) ||
-          (f = check(nonnegative(p.range_m), "deflect_all.range_m", p.range_m, "must be >= 0"))) {
+      const auto& keys = fragsim::deflect_all_param_spec();
+      const fragsim::DeflectAllParams d = deflect_all_params(def);
+      if ((f = check_key(keys, "accel_mps2", d, "deflect_all.accel_mps2")) ||
+          (f = check_key(keys, "range_m", d, "deflect_all.range_m"))) {
         return f;
       }
       return {};
@@ -299,40 +349,20 @@ struct fragsim_controller {
   explicit fragsim_controller(const fragsim_controller_def& d) : def(d) {
     switch (raw(d.strategy)) {
       case FRAGSIM_STRATEGY_EDGE_MIN: {
-        fragsim::EdgeMinParams p;
-        p.margin_m = d.edge_min.margin_m;
-        p.a_max_mps2 = d.edge_min.a_max_mps2;
-        p.camera_model = static_cast<fragsim::CameraModel>(raw(d.edge_min.camera_model));
-        p.camera_accel_mps2 = d.edge_min.camera_accel_mps2;
-        p.camera_turn_degps = d.edge_min.camera_turn_degps;
-        p.horizon_cap_s = d.horizon_cap_s;
-        p.max_solves = d.edge_min.max_solves;
-        auto e = std::make_unique<fragsim::EdgeMinStrategy>(p);
+        auto e = std::make_unique<fragsim::EdgeMinStrategy>(edge_min_params(d));
         edge_min = e.get();
         strategy = std::move(e);
         break;
       }
       case FRAGSIM_STRATEGY_EDGE: {
-        fragsim::EdgeParams p;
-        p.k = d.edge.k_Nms2;
-        p.a_max_mps2 = d.edge.a_max_mps2;
-        p.predictor = static_cast<fragsim::Predictor>(raw(d.edge.predictor));
-        p.reach = static_cast<fragsim::Reach>(raw(d.edge.reach));
-        p.horizon = static_cast<fragsim::Horizon>(raw(d.edge.horizon));
-        p.replan = static_cast<fragsim::Replan>(raw(d.edge.replan));
-        p.horizon_cap_s = d.horizon_cap_s;
-        auto e = std::make_unique<fragsim::EdgeStrategy>(p);
+        auto e = std::make_unique<fragsim::EdgeStrategy>(edge_params(d));
         edge = e.get();
         strategy = std::move(e);
         break;
       }
-      case FRAGSIM_STRATEGY_DEFLECT_ALL: {
-        fragsim::DeflectAllParams p;
-        p.accel_mps2 = d.deflect_all.accel_mps2;
-        p.range_m = d.deflect_all.range_m;
-        strategy = std::make_unique<fragsim::DeflectAllStrategy>(p);
+      case FRAGSIM_STRATEGY_DEFLECT_ALL:
+        strategy = std::make_unique<fragsim::DeflectAllStrategy>(deflect_all_params(d));
         break;
-      }
     }
     reset();
   }
@@ -549,7 +579,8 @@ FRAGSIM_API const char* fragsim_status_string(fragsim_status status) {
 }
 
 FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void) {
-  // The defaults are the tool's (strategy_params.hpp), read from its structs so they cannot drift.
+  // The defaults are the tool's (strategies/*_params.hpp), read from its structs so they cannot
+  // drift.
   const fragsim::EdgeMinParams em;
   const fragsim::EdgeParams e;
   const fragsim::DeflectAllParams da;

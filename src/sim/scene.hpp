@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
-#include "strategies/strategy_params.hpp"
+#include "strategies/strategy_settings.hpp"
 
 namespace fragsim {
 
@@ -133,18 +133,15 @@ struct MetricsDef {
   double deviation_threshold_m = 0.01;  // a fragment moved more than this "deviated"
 };
 
-struct Scene {
+// A scene is also every strategy's settings (scene.edge.k): the strategies' sections of a scene
+// file are theirs.
+struct Scene : StrategySettings {
   std::string name = "unnamed";
   SimulationDef sim;
   ObjectDef object;
   ExplosionDef explosion;
   GroundDef ground;
   CameraDef camera;
-  WallParams wall;
-  DeflectAllParams deflect_all;
-  NearPlaneParams near_plane;
-  EdgeParams edge;
-  EdgeMinParams edge_min;
   MetricsDef metrics;
 
   int fragment_count() const { return object.splits * object.splits * object.splits; }

@@ -1,6 +1,9 @@
 #pragma once
 // Scene settings from a scene file (Boost.Program_options' INI syntax) and from the command line
 // (--section.key value): one table of keys serves both, with every key's unit, default and range.
+// The table is the scene's own keys (declared in scene_file.cpp) and every registered strategy's
+// (declared in the strategy's own files, strategies/registry.hpp); the functions that take a
+// StrategyTable use its strategies instead of the registry's (a test's table, say).
 
 #include <boost/program_options/options_description.hpp>
 #include <boost/program_options/parsers.hpp>
@@ -10,6 +13,7 @@
 
 #include "io/input_file.hpp"
 #include "sim/scene.hpp"
+#include "strategies/registry.hpp"
 
 namespace fragsim {
 
@@ -22,6 +26,7 @@ class SceneError : public InputError {
 
 // Every scene key as a string-valued option, for the CLI's parser and its --help.
 const boost::program_options::options_description& scene_options();
+boost::program_options::options_description scene_options(const StrategyTable& table);
 
 // A key set on the command line: the name without dashes, its value.
 struct SceneOverride {
@@ -38,11 +43,15 @@ Scene load_scene(const std::string& path, const std::vector<SceneOverride>& over
 // The same from a string holding a scene file's text; `origin` names it in messages.
 Scene parse_scene(const std::string& text, const std::string& origin,
                   const std::vector<SceneOverride>& overrides = {});
+Scene parse_scene(const std::string& text, const std::string& origin,
+                  const std::vector<SceneOverride>& overrides, const StrategyTable& table);
 
 // The fully resolved scene as a scene file: reading it back gives the same Scene bit for bit.
 std::string scene_to_ini(const Scene& scene);
+std::string scene_to_ini(const Scene& scene, const StrategyTable& table);
 
-// Checks across keys (near < far, look_at off the path, ...). Throws SceneError.
-void validate_scene(const Scene& scene);
+// Checks across keys (near < far, look_at off the path, ...), the strategies' included. Throws
+// SceneError.
+void validate_scene(const Scene& scene, const StrategyTable& table = strategy_table());
 
 }  // namespace fragsim

@@ -2,8 +2,8 @@
 // `deflect-all`: every fragment approaching the camera within range is pushed away from the view
 // axis, with no prediction and no choice of edge (thesis fig. 2.2).
 
+#include "strategies/deflect_all_params.hpp"
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 

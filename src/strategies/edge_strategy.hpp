@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "strategies/collision_prediction.hpp"
+#include "strategies/edge_params.hpp"
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 

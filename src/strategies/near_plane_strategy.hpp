@@ -3,8 +3,8 @@
 // minimum, so that approaching fragments are not cut (thesis fig. 2.6). The cost is depth
 // precision, reported as the depth step at a reference distance (geometry/depth_buffer.hpp).
 
+#include "strategies/near_plane_params.hpp"
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 

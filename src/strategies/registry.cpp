@@ -1,8 +1,7 @@
 #include "strategies/registry.hpp"
 
-#include <cmath>
+#include <algorithm>
 #include <sstream>
-#include <stdexcept>
 
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
@@ -14,94 +13,116 @@
 namespace fragsim {
 namespace {
 
-void require(bool ok, const char* key, double value, const char* rule) {
-  if (ok) return;
-  std::ostringstream msg;
-  msg << key << " = " << value << ": " << rule;
-  throw std::invalid_argument(msg.str());
-}
+struct NoParams {};
 
-void validate(const WallParams& p) {
-  require(std::isfinite(p.distance_m) && p.distance_m > 0, "wall.distance_m", p.distance_m,
-          "must be > 0");
-  require(std::isfinite(p.thickness_m) && p.thickness_m > 0 && p.thickness_m < 2 * p.distance_m,
-          "wall.thickness_m", p.thickness_m, "must be > 0 and < 2 wall.distance_m");
-  require(std::isfinite(p.margin) && p.margin >= 1, "wall.margin", p.margin, "must be >= 1");
-  require(p.restitution >= 0 && p.restitution <= 1, "wall.restitution", p.restitution,
-          "must be in [0, 1]");
-}
-
-void validate(const DeflectAllParams& p) {
-  require(std::isfinite(p.accel_mps2) && p.accel_mps2 >= 0, "deflect-all.accel_mps2", p.accel_mps2,
-          "must be >= 0");
-  require(std::isfinite(p.range_m) && p.range_m >= 0, "deflect-all.range_m", p.range_m,
-          "must be >= 0");
-}
-
-void validate(const NearPlaneParams& p, double camera_near_m) {
-  require(std::isfinite(p.min_near_m) && p.min_near_m > 0 && p.min_near_m <= camera_near_m,
-          "near-plane.min_near_m", p.min_near_m, "must be > 0 and <= camera.near_m");
-  require(std::isfinite(p.margin_m) && p.margin_m >= 0, "near-plane.margin_m", p.margin_m,
-          "must be >= 0");
-  require(p.depth_bits >= 8 && p.depth_bits <= 32, "near-plane.depth_bits", p.depth_bits,
-          "must be in [8, 32]");
-  require(std::isfinite(p.ref_distance_m) && p.ref_distance_m > 0, "near-plane.ref_distance_m",
-          p.ref_distance_m, "must be > 0");
-}
-
-void validate(const EdgeParams& p) {
-  require(std::isfinite(p.k) && p.k >= 0, "edge.k", p.k, "must be >= 0");
-  require(std::isfinite(p.a_max_mps2) && p.a_max_mps2 >= 0, "edge.a_max_mps2", p.a_max_mps2,
-          "must be >= 0");
-}
-
-void validate(const EdgeMinParams& p) {
-  require(std::isfinite(p.margin_m) && p.margin_m >= 0, "edge-min.margin_m", p.margin_m,
-          "must be >= 0");
-  require(std::isfinite(p.a_max_mps2) && p.a_max_mps2 >= 0, "edge-min.a_max_mps2", p.a_max_mps2,
-          "must be >= 0");
-  // The assumed bounds stand in for a scene that declares none: they must be numbers to reason
-  // with (a camera that turns or accelerates without bound is `reachable`'s case, not infinity).
-  require(std::isfinite(p.camera_accel_mps2) && p.camera_accel_mps2 >= 0,
-          "edge-min.camera_accel_mps2", p.camera_accel_mps2, "must be finite and >= 0");
-  require(std::isfinite(p.camera_turn_degps) && p.camera_turn_degps >= 0,
-          "edge-min.camera_turn_degps", p.camera_turn_degps, "must be finite and >= 0");
+const ParamSpec<NoParams>& no_params() {
+  static const ParamSpec<NoParams> spec;
+  return spec;
 }
 
 }  // namespace
 
+const StrategyTable& strategy_table() {
+  using S = StrategySettings;
+  using C = StrategyCamera;
+  static const StrategyTable table{
+      strategy_entry("none", "no control; the reference run for deviation", no_params(),
+                     [](const NoParams&, const C&) { return std::make_unique<NoneStrategy>(); }),
+      strategy_entry(
+          "wall",
+          "a transparent kinematic box in front of the camera, moving with it, that fragments "
+          "bounce off (thesis fig. 2.1)",
+          wall_param_spec(),
+          [](const WallParams& p, const C& c) {
+            return std::make_unique<WallStrategy>(p, c.fovy_deg, c.aspect);
+          },
+          &S::wall),
+      strategy_entry(
+          "deflect-all",
+          "every fragment approaching within range_m is pushed away from the view axis, with no "
+          "prediction (fig. 2.2)",
+          deflect_all_param_spec(),
+          [](const DeflectAllParams& p, const C&) {
+            return std::make_unique<DeflectAllStrategy>(p);
+          },
+          &S::deflect_all),
+      strategy_entry(
+          "near-plane",
+          "physics untouched; the near plane is pulled toward the eye whenever a fragment would "
+          "reach it (fig. 2.6)",
+          near_plane_param_spec(),
+          [](const NearPlaneParams& p, const C&) { return std::make_unique<NearPlaneStrategy>(p); },
+          &S::near_plane),
+      strategy_entry(
+          "edge",
+          "the thesis: ballistic prediction against the camera's reachable ball and the force "
+          "(3.4) toward the near rectangle's nearest edge (METHOD.md section 3)",
+          edge_param_spec(),
+          [](const EdgeParams& p, const C&) { return std::make_unique<EdgeStrategy>(p); },
+          &S::edge),
+      strategy_entry(
+          "edge-min",
+          "the least constant push toward a screen edge that makes a threatening fragment miss "
+          "the camera body and near rectangle, re-solved every step (METHOD.md section 4)",
+          edge_min_param_spec(),
+          [](const EdgeMinParams& p, const C&) { return std::make_unique<EdgeMinStrategy>(p); },
+          &S::edge_min),
+  };
+  return table;
+}
+
 const std::vector<std::string>& strategy_names() {
-  static const std::vector<std::string> names{"none",       "wall", "deflect-all",
-                                              "near-plane", "edge", "edge-min"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const StrategyEntry& e : strategy_table()) n.push_back(e.name);
+    return n;
+  }();
   return names;
 }
 
-std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& scene) {
-  if (name == "none") return std::make_unique<NoneStrategy>();
-  if (name == "wall") {
-    validate(scene.wall);
-    return std::make_unique<WallStrategy>(scene.wall, scene.camera_fovy_deg, scene.camera_aspect);
+std::string join_strategy_names(const StrategyTable& table, std::string_view separator) {
+  std::string out;
+  for (const StrategyEntry& e : table) {
+    if (!out.empty()) out += separator;
+    out += e.name;
   }
-  if (name == "deflect-all") {
-    validate(scene.deflect_all);
-    return std::make_unique<DeflectAllStrategy>(scene.deflect_all);
+  return out;
+}
+
+std::string describe_strategies(const StrategyTable& table) {
+  std::size_t width = 0;
+  for (const StrategyEntry& e : table) width = std::max(width, e.name.size());
+  std::string out = "Strategies (their parameters: the scene section of the same name):\n";
+  // Wrapped to 80 columns as Boost wraps the options above it.
+  const std::size_t indent = width + 4;
+  for (const StrategyEntry& e : table) {
+    std::string line = "  " + e.name + std::string(width - e.name.size() + 2, ' ');
+    std::istringstream words(e.description);
+    std::string word;
+    bool first = true;
+    while (words >> word) {
+      if (!first && line.size() + 1 + word.size() > 80) {
+        out += line + "\n";
+        line = std::string(indent, ' ') + word;
+      } else {
+        line += (first ? "" : " ") + word;
+      }
+      first = false;
+    }
+    out += line + "\n";
   }
-  if (name == "near-plane") {
-    validate(scene.near_plane, scene.camera_near_m);
-    return std::make_unique<NearPlaneStrategy>(scene.near_plane);
+  return out;
+}
+
+std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
+                                        const StrategyCamera& camera, const StrategyTable& table) {
+  for (const StrategyEntry& e : table) {
+    if (e.name != name) continue;
+    e.check(settings, camera);
+    return e.make(settings, camera);
   }
-  if (name == "edge") {
-    validate(scene.edge);
-    return std::make_unique<EdgeStrategy>(scene.edge);
-  }
-  if (name == "edge-min") {
-    validate(scene.edge_min);
-    return std::make_unique<EdgeMinStrategy>(scene.edge_min);
-  }
-  std::string known;
-  for (const std::string& n : strategy_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown strategy '" + std::string(name) + "' (known: " + known +
-                              ")");
+  throw InputError("unknown strategy '" + std::string(name) +
+                   "' (known: " + join_strategy_names(table, ", ") + ")");
 }
 
 }  // namespace fragsim

@@ -3,7 +3,7 @@
 // (thesis fig. 2.1). The strategy itself applies no force; the wall lives in the physics world.
 
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
+#include "strategies/wall_params.hpp"
 
 namespace fragsim {
 

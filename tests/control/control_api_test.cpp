@@ -155,6 +155,9 @@ TEST(ControlApi, BadDefValuesAreRefusedNamingTheField) {
   const Case cases[] = {
       {[](fragsim_controller_def& d) { d.edge_min.a_max_mps2 = kNaN; }, "edge_min.a_max_mps2"},
       {[](fragsim_controller_def& d) { d.edge_min.margin_m = -0.01; }, "edge_min.margin_m"},
+      // The scene file's range for the same parameter (edge-min.a_max_mps2 is at most 1e9).
+      {[](fragsim_controller_def& d) { d.edge_min.a_max_mps2 = 2e9; }, "edge_min.a_max_mps2"},
+      {[](fragsim_controller_def& d) { d.edge_min.max_solves = -1; }, "edge_min.max_solves"},
       {[](fragsim_controller_def& d) { set_raw(d.edge_min.camera_model, 9); },
        "edge_min.camera_model"},
       {[](fragsim_controller_def& d) { d.horizon_cap_s = 0.0; }, "horizon_cap_s"},

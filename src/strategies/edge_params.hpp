@@ -1,0 +1,37 @@
+#pragma once
+// `edge`'s parameters (the thesis, METHOD.md section 3) and their scene keys ([edge]).
+
+#include "strategies/param_spec.hpp"
+
+namespace fragsim {
+
+// Which ballistic path the prediction uses.
+enum class Predictor {
+  kThesis,    // (3.1) with the velocity read from the physics.
+  kDiscrete,  // ODE's semi-implicit Euler: the parabola with velocity V + g dt/2.
+};
+// Which region the camera can reach before the fragment lands.
+enum class Reach {
+  kThesis,   // The fixed ball |X - P_c(t_now)| = V_c (t_G - t_now), plus both radii.
+  kGrowing,  // The ball V_c (t - t_now) + radii that grows with time.
+};
+// Height at which the fragment is taken to "reach the ground" (t_G).
+enum class Horizon { kCamera, kGround };
+// Which non-candidates are examined again after t = 0.
+enum class Replan { kNever, kContact, kAlways };
+
+struct EdgeParams {
+  double k = 1.0;            // gain of (3.4), N m s^2
+  double a_max_mps2 = 50.0;  // cap on the imposed acceleration (5 g)
+  Predictor predictor = Predictor::kThesis;
+  Reach reach = Reach::kThesis;
+  Horizon horizon = Horizon::kCamera;
+  Replan replan = Replan::kNever;
+  // t_G's fallback and cap: a path that never falls through the horizon height is examined this
+  // far ahead (the thesis used the scene's end; a game has none, so this is a setting).
+  double horizon_cap_s = 3.0;
+};
+
+const ParamSpec<EdgeParams>& edge_param_spec();
+
+}  // namespace fragsim
