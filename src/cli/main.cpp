@@ -22,7 +22,7 @@
 #include "metrics/trajectory_writer.hpp"
 #include "report/csv_export.hpp"
 #include "report/html_report.hpp"
-#include "settings/input_error.hpp"
+#include "io/input_error.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "settings/input_error.hpp"
+#include "io/input_error.hpp"
 
 namespace fragsim {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "io/number_format.hpp"
-#include "settings/input_error.hpp"
+#include "io/input_error.hpp"
 #include "settings/value_text.hpp"
 
 namespace fragsim::settings {
