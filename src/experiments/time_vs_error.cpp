@@ -11,6 +11,7 @@
 #include "metrics/near_plane_metric.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
+#include "strategies/registry.hpp"
 
 namespace fragsim {
 namespace {
@@ -27,12 +28,6 @@ double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-Predictor probed_predictor(const std::string& strategy, const Scene& scene) {
-  // edge predicts with its configured path; edge-min (and the baselines, which do not predict)
-  // are measured against ODE's own discrete parabola.
-  return strategy == "edge" ? scene.edge.predictor : Predictor::kDiscrete;
 }
 
 struct Measured {
@@ -52,7 +47,7 @@ void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measu
               Timing& timing) {
   auto strategy = make_strategy(o.strategy, scene);
   NearPlaneMetric near;
-  AccuracyProbe probe(o.sample_dt_s, probed_predictor(o.strategy, scene));
+  AccuracyProbe probe(o.sample_dt_s, strategy->path_predictor());
   RunObserver* observers[] = {&near, &probe};
   const RunTotals totals = simulate(scene, *strategy, observers);
   timing.compute_s.push_back((totals.physics_s + totals.strategy_s) / scene.sim.duration_s);
@@ -150,12 +145,12 @@ std::vector<BenchConfig> standard_bench_configs(const std::string& strategy) {
   c.push_back({"auto-disable + cull",
                "skip",
                {key("simulation.auto_disable", "on"), key("simulation.cull_resting", "on")}});
-  if (strategy == "edge") {
-    for (const char* p : {"thesis", "discrete"}) {
-      c.push_back({std::string("predictor ") + p, "predictor", {key("edge.predictor", p)}});
-    }
-    for (const char* r : {"never", "contact", "always"}) {
-      c.push_back({std::string("replan ") + r, "replan", {key("edge.replan", r)}});
+  // Then the strategy's own accuracy settings, as it declares them.
+  if (const StrategyEntry* entry = find_strategy(strategy)) {
+    for (const TuningVariant& v : entry->tuning) {
+      BenchConfig config{v.label, v.group, {}};
+      for (const auto& [k, value] : v.keys) config.overrides.push_back(key(k, value));
+      c.push_back(std::move(config));
     }
   }
   return c;

@@ -21,8 +21,9 @@ struct BenchConfig {
   std::vector<SceneOverride> overrides;
 };
 
-// The configurations the issue asks for, for `strategy` on `base` (predictor and replan only
-// apply to `edge`). The first one is the scene as given ("default").
+// The configurations the issue asks for, for `strategy` on `base`: the step, the solver and the
+// skips, then the strategy's own accuracy settings (its ParamSpec's tuning, e.g. edge's
+// predictor and replan). The first one is the scene as given ("default").
 std::vector<BenchConfig> standard_bench_configs(const std::string& strategy);
 
 // The finest step the bench tries (1/480 s) with the exact solver.

@@ -22,7 +22,13 @@ const ParamSpec<EdgeParams>& edge_param_spec() {
             "t_G's fallback and cap: a path that never falls through the horizon height is "
             "examined this far ahead (a game has no scene end)",
             &P::horizon_cap_s, open_closed(0, 3600))},
-      {}};
+      {},
+      // The path model and the re-examination are edge's own trade of time against error.
+      {{"predictor", "predictor thesis", {{"edge.predictor", "thesis"}}},
+       {"predictor", "predictor discrete", {{"edge.predictor", "discrete"}}},
+       {"replan", "replan never", {{"edge.replan", "never"}}},
+       {"replan", "replan contact", {{"edge.replan", "contact"}}},
+       {"replan", "replan always", {{"edge.replan", "always"}}}}};
   return spec;
 }
 

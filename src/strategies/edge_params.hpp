@@ -2,14 +2,10 @@
 // `edge`'s parameters (the thesis, METHOD.md section 3) and their scene keys ([edge]).
 
 #include "strategies/param_spec.hpp"
+#include "strategies/predictor.hpp"
 
 namespace fragsim {
 
-// Which ballistic path the prediction uses.
-enum class Predictor {
-  kThesis,    // (3.1) with the velocity read from the physics.
-  kDiscrete,  // ODE's semi-implicit Euler: the parabola with velocity V + g dt/2.
-};
 // Which region the camera can reach before the fragment lands.
 enum class Reach {
   kThesis,   // The fixed ball |X - P_c(t_now)| = V_c (t_G - t_now), plus both radii.

@@ -18,6 +18,7 @@ class EdgeStrategy final : public Strategy {
  public:
   explicit EdgeStrategy(const EdgeParams& params) : params_(params) {}
   std::string name() const override { return "edge"; }
+  Predictor path_predictor() const override { return params_.predictor; }
   void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
 

@@ -4,6 +4,9 @@
 // or one of them and the camera. The registry puts this in the strategy's scene section.
 
 #include <functional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "settings/key.hpp"
 
@@ -16,11 +19,20 @@ struct StrategyCamera {
   double near_m = 0.1;
 };
 
+// One of a strategy's own accuracy settings for the time-against-error bench (fragsim bench) to
+// try alone against the scene as given: the bench knows no strategy, it runs what each declares.
+struct TuningVariant {
+  std::string group;                                      // "predictor"
+  std::string label;                                      // "predictor thesis"
+  std::vector<std::pair<std::string, std::string>> keys;  // {"edge.predictor", "thesis"}
+};
+
 template <class Params>
 struct ParamSpec {
   settings::Keys<Params> keys;  // in the order --help and config.ini list them
   // Rules across keys or with the camera. Throws InputError naming the key. Empty: none.
   std::function<void(const Params&, const StrategyCamera&)> rules;
+  std::vector<TuningVariant> tuning{};  // in the order the bench tries them
 };
 
 }  // namespace fragsim

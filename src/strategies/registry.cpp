@@ -114,12 +114,18 @@ std::string describe_strategies(const StrategyTable& table) {
   return out;
 }
 
+const StrategyEntry* find_strategy(std::string_view name, const StrategyTable& table) {
+  for (const StrategyEntry& e : table) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
 std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
                                         const StrategyCamera& camera, const StrategyTable& table) {
-  for (const StrategyEntry& e : table) {
-    if (e.name != name) continue;
-    e.check(settings, camera);
-    return e.make(settings, camera);
+  if (const StrategyEntry* e = find_strategy(name, table)) {
+    e->check(settings, camera);
+    return e->make(settings, camera);
   }
   throw InputError("unknown strategy '" + std::string(name) +
                    "' (known: " + join_strategy_names(table, ", ") + ")");

@@ -27,6 +27,7 @@ struct StrategyEntry {
   // Only the rules across keys: the parser has already checked each value against its key.
   std::function<void(const StrategySettings&, const StrategyCamera&)> check_across;
   std::function<std::unique_ptr<Strategy>(const StrategySettings&, const StrategyCamera&)> make;
+  std::vector<TuningVariant> tuning;  // what the time-against-error bench tries (ParamSpec)
 };
 
 using StrategyTable = std::vector<StrategyEntry>;
@@ -64,6 +65,7 @@ StrategyEntry strategy_entry(std::string name, std::string description,
   e.make = [get, make](const StrategySettings& s, const StrategyCamera& c) {
     return std::unique_ptr<Strategy>(make(get(s), c));
   };
+  e.tuning = spec.tuning;
   e.name = std::move(name);
   e.description = std::move(description);
   return e;
@@ -80,6 +82,10 @@ std::string join_strategy_names(const StrategyTable& table, std::string_view sep
 
 // For --help: one line per strategy, its name and what it does.
 std::string describe_strategies(const StrategyTable& table);
+
+// The entry named `name`; nullptr when there is none.
+const StrategyEntry* find_strategy(std::string_view name,
+                                   const StrategyTable& table = strategy_table());
 
 // The named strategy, its parameters checked first. Throws InputError naming the strategy
 // (unknown name) or the parameter and its value.

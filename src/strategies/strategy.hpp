@@ -12,6 +12,7 @@
 
 #include "geometry/camera_pose.hpp"
 #include "geometry/fragment_state.hpp"
+#include "strategies/predictor.hpp"
 
 namespace fragsim {
 
@@ -77,6 +78,9 @@ class Strategy {
   virtual ~Strategy() = default;
   virtual std::string name() const = 0;
   virtual WorldNeeds needs() const { return {}; }
+  // The path it predicts fragments with; the baselines, which do not predict, and edge-min are
+  // measured against ODE's own discrete parabola.
+  virtual Predictor path_predictor() const { return Predictor::kDiscrete; }
   // Called before the first step of every run.
   virtual void reset(int fragment_count) = 0;
   // Called once per step, before the physics step; `out` arrives cleared.

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -179,6 +180,40 @@ TEST(BenchCommand, WritesTheCsvWithTheReferenceFirst) {
   EXPECT_EQ(rows, 5);  // reference, default (= dt 1/60), dt 1/30, 1/120, 1/240
   EXPECT_NE(r.out.find("dt 1/60: the same simulation as default"), std::string::npos) << r.out;
   std::filesystem::remove(path);
+}
+
+// The bench names no strategy: after the shared groups it tries what each strategy declares of
+// its own accuracy settings, so edge gets its predictor and replan rows and edge-min none.
+TEST(TimeVsError, StrategyTuningComesFromItsDeclaration) {
+  auto groups_of = [](const std::string& strategy) {
+    std::vector<std::string> names;
+    for (const BenchConfig& c : standard_bench_configs(strategy)) {
+      if (c.group == "predictor" || c.group == "replan") names.push_back(c.name);
+    }
+    return names;
+  };
+  EXPECT_EQ(groups_of("edge"),
+            (std::vector<std::string>{"predictor thesis", "predictor discrete", "replan never",
+                                      "replan contact", "replan always"}));
+  EXPECT_TRUE(groups_of("edge-min").empty());
+  const std::vector<BenchConfig> edge = standard_bench_configs("edge");
+  const auto discrete = std::find_if(edge.begin(), edge.end(), [](const BenchConfig& c) {
+    return c.name == "predictor discrete";
+  });
+  ASSERT_NE(discrete, edge.end());
+  ASSERT_EQ(discrete->overrides.size(), 1u);
+  EXPECT_EQ(discrete->overrides[0].key, "edge.predictor");
+  EXPECT_EQ(discrete->overrides[0].value, "discrete");
+}
+
+// The probe measures each strategy against the path it predicts with.
+TEST(TimeVsError, ProbedPathIsTheStrategysOwn) {
+  Scene scene = test::single_fragment({0.0, 1.6, -10.0});
+  EXPECT_EQ(make_strategy("edge", scene)->path_predictor(), Predictor::kThesis);
+  scene.edge.predictor = Predictor::kDiscrete;
+  EXPECT_EQ(make_strategy("edge", scene)->path_predictor(), Predictor::kDiscrete);
+  EXPECT_EQ(make_strategy("edge-min", scene)->path_predictor(), Predictor::kDiscrete);
+  EXPECT_EQ(make_strategy("none", scene)->path_predictor(), Predictor::kDiscrete);
 }
 
 TEST(BenchCommand, BadOptionsAreOneLineUsageErrors) {
