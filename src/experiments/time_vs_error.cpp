@@ -6,8 +6,8 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "experiments/accuracy_probe.hpp"
 #include "io/number_format.hpp"
-#include "metrics/accuracy_probe.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"

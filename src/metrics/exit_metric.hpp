@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "metrics/run_summary.hpp"
-#include "metrics/swept_box.hpp"
+#include "geometry/swept_box.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 

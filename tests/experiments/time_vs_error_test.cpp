@@ -11,9 +11,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "experiments/accuracy_probe.hpp"
 #include "experiments/time_vs_error.hpp"
 #include "io/number_format.hpp"
-#include "metrics/accuracy_probe.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 #include "support/run_fragsim.hpp"

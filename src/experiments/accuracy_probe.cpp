@@ -1,4 +1,4 @@
-#include "metrics/accuracy_probe.hpp"
+#include "experiments/accuracy_probe.hpp"
 
 #include <algorithm>
 #include <cmath>

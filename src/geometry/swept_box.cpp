@@ -1,4 +1,4 @@
-#include "metrics/swept_box.hpp"
+#include "geometry/swept_box.hpp"
 
 #include <algorithm>
 
