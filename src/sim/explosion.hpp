@@ -1,6 +1,7 @@
 #pragma once
 // Breaks the object into splits^3 boxes and gives each the velocity the blast leaves it with.
 
+#include <memory>
 #include <vector>
 
 #include "geometry/fragment_state.hpp"
@@ -14,8 +15,10 @@ struct FragmentSpawn {
   Eigen::Vector3d position_m;
   Eigen::Vector3d velocity_mps;
   Eigen::Vector3d angular_velocity_radps;
-  Eigen::Vector3d half_extents_m;
+  Eigen::Vector3d half_extents_m;  // the box, or with `shape` the box about its centre of mass
   double mass_kg = 0.0;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // body axes as columns, in world
+  std::shared_ptr<const ConvexShape> shape;                // null: a box (geometry/convex_shape)
 };
 
 // Where the object's centre is: object.centre_m, or, with object.distance_m set, the point that
