@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -459,15 +460,17 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       const Eigen::Vector3d d = f.position_m - cam.eye_m;
       const double closing = -d.dot(f.velocity_mps - ctx.camera_velocity_mps);
       const double arrival_s = closing > 0.0 ? d.squaredNorm() / closing : kInf;
-      queue_.push_back({arrival_s, static_cast<int>(i)});
+      // Threats to the protected box on the current path (not cleared of it) before those only
+      // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
+      queue_.push_back({clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});
     }
     const auto cap = static_cast<std::size_t>(params_.max_solves);
     if (queue_.size() > cap) {
-      // (arrival, index) is a total order: the same set is solved whatever the sort does.
+      // (tier, arrival, index) is a total order: the same set is solved whatever the sort does.
       std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
                        queue_.end());
       for (std::size_t k = cap; k < queue_.size(); ++k) {
-        deferred_[static_cast<std::size_t>(queue_[k].second)] = 1;
+        deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
       }
       out.deferred = static_cast<int>(queue_.size() - cap);
     }

@@ -32,6 +32,7 @@
 // region: it still holds, since reachable does not depend on A at all.
 
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -76,7 +77,7 @@ class EdgeMinStrategy final : public Strategy {
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
   std::vector<Eigen::Vector3d> last_force_N_;
-  std::vector<std::pair<double, int>> queue_;
+  std::vector<std::tuple<int, double, int>> queue_;  // (tier, arrival, fragment)
   std::vector<char> deferred_;
 };
 
