@@ -262,8 +262,10 @@ struct GrownBox {
                                              const Lanes (&hi_m)[3], Lanes grow, Lanes t_end,
                                              Lanes reach_m) {
   const GrownBox box = grow_box(d, v, lo_m, hi_m, grow, t_end, reach_m);
-  return box.usable &
-         (box_ranges_miss(d, v, acc, box, t_end) | box_window_miss(d, v, acc, box, t_end));
+  const Mask by_ranges = box.usable & box_ranges_miss(d, v, acc, box, t_end);
+  // The window's roots only where the ranges left a path in doubt: the same answer, cheaper.
+  if (lanes::bits(by_ranges) == 3) return by_ranges;
+  return by_ranges | (box.usable & box_window_miss(d, v, acc, box, t_end));
 }
 [[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
                                              const BoxAccel& acc, const Lanes (&lo_m)[3],
