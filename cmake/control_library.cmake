@@ -8,6 +8,10 @@
 # static one when fragsim_control_USE_STATIC is set before the call. Eigen is a private,
 # header-only dependency: nothing of it is needed to use the installed library.
 
+# Re-read when the header changes: a version bump must reach the package files without a fresh
+# configure.
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+  ${PROJECT_SOURCE_DIR}/include/fragsim/control.h)
 file(STRINGS ${PROJECT_SOURCE_DIR}/include/fragsim/control.h FRAGSIM_CONTROL_VERSION_LINES
   REGEX "^#define FRAGSIM_CONTROL_VERSION_(MAJOR|MINOR|PATCH) ")
 foreach(line ${FRAGSIM_CONTROL_VERSION_LINES})

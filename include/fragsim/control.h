@@ -30,7 +30,7 @@
 #include <stdint.h>
 
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 2
+#define FRAGSIM_CONTROL_VERSION_MINOR 3
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -260,6 +260,10 @@ typedef struct fragsim_step_stats {
   int32_t new_ids;     /* fragments whose id the controller had not seen at its last step */
   int32_t dropped_ids; /* ids of the last step absent from this one (their state is forgotten) */
   int32_t deferred; /* fragments edge_min.max_solves left unsolved (they kept their last force) */
+  /* Since 0.3: fragments (a count, 0 to fragment_count) that edge-min's cheap box rejection
+   * settled as certainly clear before any exact solve; rejected_cheaply / fragment_count is the
+   * share of the step's work that took the fast path. 0 for edge and deflect-all. */
+  int32_t rejected_cheaply;
 } fragsim_step_stats;
 
 typedef struct fragsim_controller fragsim_controller;

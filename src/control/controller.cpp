@@ -513,6 +513,7 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
     stats->new_ids = new_ids;
     stats->dropped_ids = dropped_ids;
     stats->deferred = out.deferred;
+    stats->rejected_cheaply = out.rejected_cheaply;
   }
   error.clear();
   return FRAGSIM_OK;

@@ -2,9 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 
 #include "strategies/lanes.hpp"
+
+// The four-lane first tier: GCC on x86-64 (Clang refuses AVX vectors outside AVX code even where
+// they are inlined into it; it builds only the fuzzers here).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define FRAGSIM_WIDE_LANES 1
+#include <immintrin.h>
+#endif
 
 namespace fragsim {
 namespace {
@@ -177,11 +186,11 @@ struct GrownBox {
   Mask usable;
 };
 [[gnu::always_inline]] inline GrownBox grow_box(const Lanes (&d)[3], const Lanes (&v)[3],
-                                                const BoxAccel& acc, const Lanes (&lo_m)[3],
-                                                const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
+                                                const Lanes (&lo_m)[3], const Lanes (&hi_m)[3],
+                                                Lanes grow, Lanes t_end, Lanes reach_m) {
   // The scale bounds every coordinate's reach and the grown box's faces (|lo - grow| <= |lo| +
   // grow).
-  const Lanes scale = l1(d) + l1(v) * t_end + acc.reach_m + 6.0 * lanes::abs(grow);
+  const Lanes scale = l1(d) + l1(v) * t_end + reach_m + 6.0 * lanes::abs(grow);
   const Lanes tol = kBoxMargin * scale;
   GrownBox box;
   for (int i = 0; i < 3; ++i) {
@@ -246,14 +255,383 @@ struct GrownBox {
   return miss;
 }
 
-// Both stages: the box test for two paths at once.
+// Both stages: the box test for two paths at once, each over its own [0, t_end]; reach_m is
+// |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
+[[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
+                                             const BoxAccel& acc, const Lanes (&lo_m)[3],
+                                             const Lanes (&hi_m)[3], Lanes grow, Lanes t_end,
+                                             Lanes reach_m) {
+  const GrownBox box = grow_box(d, v, lo_m, hi_m, grow, t_end, reach_m);
+  const Mask by_ranges = box.usable & box_ranges_miss(d, v, acc, box, t_end);
+  // The window's roots only where the ranges left a path in doubt: the same answer, cheaper.
+  if (lanes::bits(by_ranges) == 3) return by_ranges;
+  return by_ranges | (box.usable & box_window_miss(d, v, acc, box, t_end));
+}
 [[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
                                              const BoxAccel& acc, const Lanes (&lo_m)[3],
                                              const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
-  const GrownBox box = grow_box(d, v, acc, lo_m, hi_m, grow, t_end);
-  return box.usable &
-         (box_ranges_miss(d, v, acc, box, t_end) | box_window_miss(d, v, acc, box, t_end));
+  return box_clear(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m);
 }
+
+// ---- edge-min's two boxes ----------------------------------------------------------------------
+
+// The first tier runs over every fragment, so it comes in two widths: two lanes (SSE2, lanes.hpp)
+// and, where the processor has AVX2, four, through GCC's vector extension in a function compiled
+// for AVX2 (chosen at run time). Both are the same template over the operations below, so the
+// same IEEE operations in the same order (no FMA: -ffp-contract=off, and "avx2" does not enable
+// it): the same answers, bit for bit, whatever the width.
+struct NarrowOps {
+  using V = Lanes;
+  using M = Mask;
+  static constexpr int kWidth = 2;
+  static V splat(double x) { return lanes::broadcast(x); }
+  static V load(const double* p) { return lanes::load(p); }
+  static M lt(V a, V b) { return lanes::lt(a, b); }
+  static M le(V a, V b) { return lanes::le(a, b); }
+  static M gt(V a, V b) { return lanes::gt(a, b); }
+  static M ge(V a, V b) { return lanes::ge(a, b); }
+  static V select(M m, V a, V b) { return lanes::select(m, a, b); }
+  static V min(V a, V b) { return lanes::min(a, b); }
+  static V max(V a, V b) { return lanes::max(a, b); }
+  static V abs(V x) { return lanes::abs(x); }
+  static int bits(M m) { return lanes::bits(m); }
+};
+
+#if defined(FRAGSIM_WIDE_LANES)
+#pragma GCC diagnostic ignored "-Wpsabi"  // the four-lane type only ever lives in AVX2 code
+using Wide = double __attribute__((vector_size(32)));
+using WideMask = std::int64_t __attribute__((vector_size(32)));
+struct WideOps {
+  using V = Wide;
+  struct M {
+    WideMask bits;
+    [[gnu::always_inline]] M operator&(const M& o) const { return {bits & o.bits}; }
+    [[gnu::always_inline]] M operator|(const M& o) const { return {bits | o.bits}; }
+  };
+  static constexpr int kWidth = 4;
+  [[gnu::always_inline]] static V splat(double x) { return V{x, x, x, x}; }
+  [[gnu::always_inline]] static V load(const double* p) {
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  // Comparisons as on doubles (false where NaN); selection and |x| by the bits.
+  [[gnu::always_inline]] static M lt(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a < b)};
+  }
+  [[gnu::always_inline]] static M le(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a <= b)};
+  }
+  [[gnu::always_inline]] static M gt(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a > b)};
+  }
+  [[gnu::always_inline]] static M ge(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a >= b)};
+  }
+  [[gnu::always_inline]] static V select(const M& m, const V& a, const V& b) {
+    return reinterpret_cast<V>((reinterpret_cast<WideMask>(a) & m.bits) |
+                               (reinterpret_cast<WideMask>(b) & ~m.bits));
+  }
+  // std::min and std::max, as lanes::min and lanes::max.
+  [[gnu::always_inline]] static V min(const V& a, const V& b) { return select(lt(b, a), b, a); }
+  [[gnu::always_inline]] static V max(const V& a, const V& b) { return select(lt(a, b), b, a); }
+  [[gnu::always_inline]] static V abs(const V& x) {
+    const WideMask magnitude = WideMask{} + INT64_MAX;
+    return reinterpret_cast<V>(reinterpret_cast<WideMask>(x) & magnitude);
+  }
+  [[gnu::always_inline]] static int bits(const M& m) {
+    return static_cast<int>((m.bits[0] & 1) | (m.bits[1] & 2) | (m.bits[2] & 4) | (m.bits[3] & 8));
+  }
+};
+#endif
+
+// An upper bound, without a division or a square root, on the interval edge-min's solve gives
+// a path (cheap_rejection.hpp): max(min(g, cap), floor), g = EdgeMinStrategy::time_to_ground_s,
+// the later root of c + b t + a t^2 (c = y - ground, b = v_y, a = half_gy < 0) going down, or 0
+// or +inf. For a < 0 that function computes disc = b b - 4 a c, s = sqrt(disc), q = -(b +
+// sign(b) s) / 2 and returns max(q / a, c / q) when it is positive and the path goes down there.
+// - c <= 0 and (b <= 0 or disc < 0): it returns 0 (q >= 0 makes both quotients <= 0; or no real
+//   root), so the interval is the floor.
+// - otherwise it returns 0 or the later root, which is (b + s) / (2 |a|) up to a few roundings,
+//   whichever quotient computes it (for b < 0 it is c / q = 2 c / (|b| + s), the same number up
+//   to rounding, cancellation included: the difference is ~eps |b| / |a|). With S >= s (1 +
+//   1e-9), (b + S) / (2 |a|) (1 + 1e-9) exceeds it by ~1e-9 (|b| + s) / |a|, far more than those
+//   roundings (~1e-16 of the same). S: sqrt(x) <= (x / u + u) / 2 for every u > 0 (the
+//   arithmetic and geometric means), least over u = 1/4, 1, 4 m/s (x / u exact): within 25% of
+//   sqrt(x) for x in [1/16, 64] (m/s)^2, the scale of a falling fragment; below, S >= 1/8 m/s
+//   still gives less than a step at g = 9.81 (the floor: a fragment sliding on the ground).
+// - it returns +inf where c > 0 only when the numbers under- or overflow (a later root <= 0 or
+//   not going down cannot happen otherwise: s > |b| there). Those, c or disc beyond 1e-200 ..
+//   1e200, |b| beyond 1e100, and any non-finite number, get the cap.
+// For a >= 0 (no gravity down) every path gets max(cap, floor).
+struct HorizonBound {
+  bool down = false;  // a < 0
+  double a = 0.0;
+  double inv_2a = 0.0;  // 1 / (2 |a|), rounded up by 1e-9
+  double cap = 0.0;
+  double floor = 0.0;
+};
+HorizonBound horizon_bound(double half_gy_mps2, double cap_s, double floor_s) {
+  HorizonBound h;
+  h.down = half_gy_mps2 < 0.0;
+  h.a = half_gy_mps2;
+  h.inv_2a = h.down ? (1.0 + 1e-9) / (-2.0 * half_gy_mps2) : 0.0;
+  h.cap = cap_s;
+  h.floor = floor_s;
+  return h;
+}
+
+template <class O>
+[[gnu::always_inline]] inline typename O::V interval_bound(const HorizonBound& h,
+                                                           const typename O::V& y0,
+                                                           const typename O::V& vy,
+                                                           const typename O::V& ground) {
+  using V = typename O::V;
+  const V cap = O::splat(h.cap);
+  const V floor = O::splat(h.floor);
+  if (!h.down) return O::max(cap, floor);
+  const V zero = O::splat(0.0);
+  const V a = O::splat(h.a);
+  const V b = vy;
+  const V c = y0 - ground;
+  const V disc = b * b - 4.0 * a * c;  // as time_to_ground_s: the same number
+  V s = 0.5 * (disc * 4.0 + 0.25);
+  for (const double u : {1.0, 4.0}) s = O::min(s, 0.5 * (disc * (1.0 / u) + u));
+  const V root = (b + s * (1.0 + 1e-9)) * O::splat(h.inv_2a);
+  const V tiny = O::splat(1e-200);
+  const V huge = O::splat(1e200);
+  const auto below = O::le(c, zero);
+  const auto in_range = (below | (O::ge(c, tiny) & O::ge(disc, tiny))) & O::le(c, huge) &
+                        O::le(disc, huge) & O::le(O::abs(b), O::splat(1e100));
+  const auto none = below & (O::le(b, zero) | O::lt(disc, zero));
+  V t = O::select(in_range, root, O::splat(INFINITY));
+  t = O::select(none, zero, t);
+  return O::max(O::min(t, cap), floor);
+}
+
+// The first tier's test for one box. A box lo <= x <= hi in the frame's axes, grown by a
+// fragment's radius r on every axis (as the exact solves grow it), lies within R + sqrt(3) r of
+// the origin, R the distance to its farthest corner. Frame coordinates are x(t) = A (rel + rv t)
+// + a t^2 (A: the axes as rows; rel, rv: world position and velocity relative to the frame), so
+// |x(t)| >= sigma |rel + rv t| - |a| t^2 >= sigma (|rel| - |rv| t) - |a| t^2, sigma A's smallest
+// singular value. Over [0, T] the path therefore stays beyond R + sqrt(3) r when
+//   |rel| > m = k (R + sqrt(3) r + |a| T^2) + |rv|_1 T,   k >= 1 / sigma, |rv|_1 >= |rv|.
+// Tested as (1 - 1e-6) |rel|^2 > m^2: the path then stays at least 5e-7 |rel| (and 5e-7 m)
+// outside that ball, beyond the solves' rounding (~1e-15 of the coordinates' size) by far, and
+// beyond this test's own (a few ulps of |rel|^2 and m). Non-finite numbers never pass.
+struct FarBound {
+  double k_corner = INFINITY;  // k R
+  double k_radius = INFINITY;  // k sqrt(3), rounded up
+  double k_accel = INFINITY;   // k |a|
+};
+constexpr double kFarShrink = 1.0 - 1e-6;
+
+// 1 / sigma bounded from above: A A^T's eigenvalues are sigma_i^2, and by Weyl's inequality they
+// are within ||A A^T - I||_F of 1. +infinity (the first tier clears nothing) for axes far from
+// orthonormal.
+double inverse_sigma_bound(const Eigen::Vector3d (&axes)[3]) {
+  double e2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const double g = axes[i].dot(axes[j]) - (i == j ? 1.0 : 0.0);
+      e2 += g * g;
+    }
+  }
+  const double e = std::sqrt(e2) + 1e-12;  // + the rounding of e itself
+  if (!(e <= 0.75)) return INFINITY;
+  return (1.0 + 1e-12) / std::sqrt(1.0 - e);
+}
+
+FarBound far_bound(double k, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
+                   const Eigen::Vector3d& a_mps2) {
+  const Eigen::Vector3d corner = lo_m.cwiseAbs().cwiseMax(hi_m.cwiseAbs());
+  const double up = 1.0 + 1e-12;  // the rounding of the norms and products
+  return {k * corner.norm() * up, k * 1.7320508075688774 * up, k * a_mps2.norm() * up};
+}
+
+template <class O>
+[[gnu::always_inline]] inline auto stays_far(const FarBound& b, const typename O::V& rel2,
+                                             const typename O::V& rv_l1,
+                                             const typename O::V& radius, const typename O::V& t) {
+  using V = typename O::V;
+  const V m = O::splat(b.k_corner) + O::splat(b.k_radius) * radius + O::splat(b.k_accel) * (t * t) +
+              rv_l1 * t;
+  return O::gt(kFarShrink * rel2, m * m) & O::lt(rel2, O::splat(INFINITY));
+}
+
+// Everything the first tier needs, as plain numbers.
+struct FirstTier {
+  double origin[3];
+  double frame_v[3];
+  double grown_v[3];
+  bool same_frame;  // grown_v = frame_v
+  bool grown;
+  FarBound box;
+  FarBound grown_box;
+  HorizonBound horizon;
+  double ground;
+  double window;
+};
+
+// One fragment's world state, W lanes at a time (the last fragment repeated past the end).
+template <class O>
+struct Gathered {
+  typename O::V p[3];
+  typename O::V v[3];
+  typename O::V radius;
+};
+template <class O, class Index>
+[[gnu::always_inline]] inline Gathered<O> gather(const FragmentState* f, Index index) {
+  constexpr int W = O::kWidth;
+  double buf[7][W];
+  for (int k = 0; k < W; ++k) {
+    const FragmentState& s = f[index(k)];
+    for (int c = 0; c < 3; ++c) {
+      buf[c][k] = s.position_m[c];
+      buf[3 + c][k] = s.velocity_mps[c];
+    }
+    buf[6][k] = s.radius_m;
+  }
+  Gathered<O> g;
+  for (int c = 0; c < 3; ++c) {
+    g.p[c] = O::load(buf[c]);
+    g.v[c] = O::load(buf[3 + c]);
+  }
+  g.radius = O::load(buf[6]);
+  return g;
+}
+
+// The first tier's answer for W fragments: bit k set when fragment k certainly clears the box
+// (bit 0 of the pair) and the grown box (bit 1), and the interval used.
+template <class O>
+struct Far {
+  typename O::M box;
+  typename O::M grown;
+  typename O::V t;
+};
+template <class O>
+[[gnu::always_inline]] inline Far<O> first_tier_test(const FirstTier& p, const Gathered<O>& g) {
+  using V = typename O::V;
+  V rel[3];
+  V rv_l1 = O::splat(0.0);
+  V rvg_l1 = O::splat(0.0);
+  for (int c = 0; c < 3; ++c) {
+    rel[c] = g.p[c] - O::splat(p.origin[c]);
+    rv_l1 = rv_l1 + O::abs(g.v[c] - O::splat(p.frame_v[c]));
+  }
+  if (p.same_frame) {
+    rvg_l1 = rv_l1;
+  } else {
+    for (int c = 0; c < 3; ++c) rvg_l1 = rvg_l1 + O::abs(g.v[c] - O::splat(p.grown_v[c]));
+  }
+  const V rel2 = rel[0] * rel[0] + rel[1] * rel[1] + rel[2] * rel[2];
+  // At least the interval edge-min's solve examines.
+  const V t = interval_bound<O>(p.horizon, g.p[1], g.v[1], O::splat(p.ground) + g.radius);
+  Far<O> out{stays_far<O>(p.box, rel2, rv_l1, g.radius, t),
+             stays_far<O>(p.grown_box, rel2, rvg_l1, g.radius, O::min(O::splat(p.window), t)), t};
+  if (!p.grown) out.grown = O::ge(t, t) | O::lt(t, t);  // all set (t is never NaN)
+  return out;
+}
+
+// The first tier over fragments [0, n) of f: lists, without a branch, those not certainly clear
+// of both boxes (as base + their index), and returns how many; the largest radius goes to r_max.
+// The last group repeats the last fragment in its spare lanes.
+template <class O>
+[[gnu::always_inline]] inline std::size_t first_tier(const FragmentState* f, std::size_t n,
+                                                     const FirstTier& p, std::size_t base,
+                                                     std::int32_t* doubt, double* r_max) {
+  using V = typename O::V;
+  constexpr int W = O::kWidth;
+  V r = O::splat(0.0);
+  std::size_t doubts = 0;
+  for (std::size_t i = 0; i < n; i += W) {
+    const Gathered<O> g =
+        gather<O>(f, [&](int k) { return std::min(i + static_cast<std::size_t>(k), n - 1); });
+    r = O::max(r, g.radius);
+    const Far<O> far = first_tier_test<O>(p, g);
+    const int settled = O::bits(far.box & far.grown);
+    for (int k = 0; k < W; ++k) {
+      doubt[doubts] = static_cast<std::int32_t>(base + i + static_cast<std::size_t>(k));
+      const bool real = i + static_cast<std::size_t>(k) < n;
+      doubts += static_cast<std::size_t>(real && ((settled >> k) & 1) == 0);
+    }
+  }
+  double lanes_r[W];
+  std::memcpy(lanes_r, &r, sizeof lanes_r);
+  double out = lanes_r[0];
+  for (int k = 1; k < W; ++k) out = std::max(out, lanes_r[k]);
+  *r_max = out;
+  return doubts;
+}
+
+std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const FirstTier& p,
+                              std::int32_t* doubt, double* r_max) {
+  return first_tier<NarrowOps>(f, n, p, 0, doubt, r_max);
+}
+
+#if defined(FRAGSIM_WIDE_LANES)
+// Four fragments' states when each one's position and velocity are six consecutive doubles
+// (`packed`): one load of four and one of two per fragment, transposed, instead of a load per
+// number.
+[[gnu::target("avx2"), gnu::always_inline]] inline Gathered<WideOps> gather_packed(
+    const FragmentState* f) {
+  const double* q[4] = {f[0].position_m.data(), f[1].position_m.data(), f[2].position_m.data(),
+                        f[3].position_m.data()};
+  const __m256d a0 = _mm256_loadu_pd(q[0]);  // px py pz vx
+  const __m256d a1 = _mm256_loadu_pd(q[1]);
+  const __m256d a2 = _mm256_loadu_pd(q[2]);
+  const __m256d a3 = _mm256_loadu_pd(q[3]);
+  const __m256d lo01 = _mm256_unpacklo_pd(a0, a1);  // px0 px1 pz0 pz1
+  const __m256d hi01 = _mm256_unpackhi_pd(a0, a1);  // py0 py1 vx0 vx1
+  const __m256d lo23 = _mm256_unpacklo_pd(a2, a3);
+  const __m256d hi23 = _mm256_unpackhi_pd(a2, a3);
+  const __m256d b02 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(q[0] + 4)),
+                                           _mm_loadu_pd(q[2] + 4), 1);  // vy0 vz0 vy2 vz2
+  const __m256d b13 = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(q[1] + 4)),
+                                           _mm_loadu_pd(q[3] + 4), 1);
+  Gathered<WideOps> g;
+  g.p[0] = reinterpret_cast<Wide>(_mm256_permute2f128_pd(lo01, lo23, 0x20));
+  g.p[1] = reinterpret_cast<Wide>(_mm256_permute2f128_pd(hi01, hi23, 0x20));
+  g.p[2] = reinterpret_cast<Wide>(_mm256_permute2f128_pd(lo01, lo23, 0x31));
+  g.v[0] = reinterpret_cast<Wide>(_mm256_permute2f128_pd(hi01, hi23, 0x31));
+  g.v[1] = reinterpret_cast<Wide>(_mm256_unpacklo_pd(b02, b13));
+  g.v[2] = reinterpret_cast<Wide>(_mm256_unpackhi_pd(b02, b13));
+  g.radius = Wide{f[0].radius_m, f[1].radius_m, f[2].radius_m, f[3].radius_m};
+  return g;
+}
+
+// Whole groups of four here (the mask's bits by AVX's own instruction, which only code compiled
+// for AVX may use), the rest two at a time.
+[[gnu::target("avx2")]] std::size_t first_tier_wide(const FragmentState* f, std::size_t n,
+                                                    const FirstTier& p, bool packed,
+                                                    std::int32_t* doubt, double* r_max) {
+  using O = WideOps;
+  O::V r = O::splat(0.0);
+  std::size_t doubts = 0;
+  std::size_t i = 0;
+  for (; i + O::kWidth <= n; i += O::kWidth) {
+    const Gathered<O> g = packed ? gather_packed(f + i) : gather<O>(f + i, [](int k) { return k; });
+    r = O::max(r, g.radius);
+    const Far<O> far = first_tier_test<O>(p, g);
+    const int open =
+        ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
+    if (open == 0) continue;  // the usual case once the debris has settled
+    for (int k = 0; k < O::kWidth; ++k) {
+      doubt[doubts] = static_cast<std::int32_t>(i + static_cast<std::size_t>(k));
+      doubts += static_cast<std::size_t>((open >> k) & 1);
+    }
+  }
+  double rest = 0.0;
+  if (i < n) doubts += first_tier<NarrowOps>(f + i, n - i, p, i, doubt + doubts, &rest);
+  double lanes_r[O::kWidth];
+  std::memcpy(lanes_r, &r, sizeof lanes_r);
+  double out = rest;
+  for (const double x : lanes_r) out = std::max(out, x);
+  *r_max = out;
+  return doubts;
+}
+#endif
+// -Wpsabi stays off to the end of the file: the templates above are instantiated there.
 
 }  // namespace
 
@@ -441,6 +819,148 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
     clears_[i1] = static_cast<char>((bits >> 1) & 1);
   }
   return clears_;
+}
+
+double interval_bound_s(double y_m, double vy_mps, double half_gy_mps2, double ground_m,
+                        double cap_s, double floor_s) {
+  const Lanes t =
+      interval_bound<NarrowOps>(horizon_bound(half_gy_mps2, cap_s, floor_s), lanes::broadcast(y_m),
+                                lanes::broadcast(vy_mps), lanes::broadcast(ground_m));
+  return t[0];
+}
+
+TwoBoxClearance::TwoBoxClearance() {
+#if defined(FRAGSIM_WIDE_LANES)
+  wide_ = __builtin_cpu_supports("avx2");
+#endif
+}
+
+void TwoBoxClearance::use_wide_lanes(bool wide) {
+#if defined(FRAGSIM_WIDE_LANES)
+  wide_ = wide && __builtin_cpu_supports("avx2");
+#else
+  (void)wide;
+#endif
+}
+
+void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes) {
+  const std::size_t n = fragments.size();
+  size_ = n;
+  clears_.assign(n, 1);
+  grown_clears_.assign(n, 1);
+  doubt_.resize(n + 4);
+  unsettled_.resize(n);
+  unsettled_count_ = 0;
+  doubts_ = 0;
+  max_radius_m_ = 0.0;
+  if (n == 0) return;
+  const BoxFrame& frame = boxes.frame;
+  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(boxes.grow_m);
+  const Eigen::Vector3d grown_lo = boxes.lo_m - grow;
+  const Eigen::Vector3d grown_hi = boxes.hi_m + grow;
+  const double k = inverse_sigma_bound(frame.axes);
+  FirstTier p;
+  for (int c = 0; c < 3; ++c) {
+    p.origin[c] = frame.origin_m[c];
+    p.frame_v[c] = frame.velocity_mps[c];
+    p.grown_v[c] = boxes.grown_velocity_mps[c];
+  }
+  p.same_frame = boxes.grown_velocity_mps == frame.velocity_mps;
+  p.grown = boxes.grown;
+  p.box = far_bound(k, boxes.lo_m, boxes.hi_m, boxes.a_mps2);
+  p.grown_box = far_bound(k, grown_lo, grown_hi, boxes.a_mps2);
+  p.horizon = horizon_bound(boxes.half_gy_mps2, boxes.cap_s, boxes.floor_s);
+  p.ground = boxes.ground_m;
+  p.window = boxes.window_s;
+
+  // The first tier, over every fragment.
+  std::int32_t* const doubt = doubt_.data();
+  std::size_t doubts = 0;
+#if defined(FRAGSIM_WIDE_LANES)
+  if (wide_) {
+    const FragmentState& f0 = fragments[0];
+    const bool packed = f0.velocity_mps.data() == f0.position_m.data() + 3;
+    doubts = first_tier_wide(fragments.data(), n, p, packed, doubt, &max_radius_m_);
+  } else {
+    doubts = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+  }
+#else
+  doubts = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+#endif
+
+  doubts_ = doubts;
+
+  // The second tier, over the rest, two at a time: the first tier's answer again (it settles
+  // one box of many of them), then the box tests in the frame's axes, each over the fragment's
+  // interval (the first tier's bound on it) and, for the grown box, the window within it.
+  Lanes origin[3];
+  Lanes frame_v[3];
+  Lanes grown_v[3];
+  Lanes axes[3][3];
+  broadcast3(frame.origin_m, origin);
+  broadcast3(frame.velocity_mps, frame_v);
+  broadcast3(boxes.grown_velocity_mps, grown_v);
+  for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], axes[c]);
+  const BoxAccel acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
+  const BoxAccel grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
+  const Lanes a_l1 = lanes::broadcast(boxes.a_mps2.lpNorm<1>());
+  const Lanes window = lanes::broadcast(boxes.window_s);
+  Lanes lo[3];
+  Lanes hi[3];
+  Lanes glo[3];
+  Lanes ghi[3];
+  broadcast3(boxes.lo_m, lo);
+  broadcast3(boxes.hi_m, hi);
+  broadcast3(grown_lo, glo);
+  broadcast3(grown_hi, ghi);
+  // Raw pointers: a store through a char may alias anything, the vectors' own pointers included.
+  char* const clears = clears_.data();
+  char* const grown_clears = grown_clears_.data();
+  std::int32_t* const unsettled = unsettled_.data();
+  std::size_t unsettled_count = 0;
+  for (std::size_t j = 0; j < doubts; j += lanes::kWidth) {
+    const std::size_t j1 = std::min(j + 1, doubts - 1);
+    const std::size_t i0 = static_cast<std::size_t>(doubt[j]);
+    const std::size_t i1 = static_cast<std::size_t>(doubt[j1]);
+    const Gathered<NarrowOps> g =
+        gather<NarrowOps>(fragments.data(), [&](int k) { return k == 0 ? i0 : i1; });
+    const Far<NarrowOps> far = first_tier_test<NarrowOps>(p, g);
+    const Lanes t = far.t;
+    Lanes d[3];
+    Lanes w[3];
+    Lanes wg[3];
+    for (int c = 0; c < 3; ++c) {
+      const Lanes rel[3] = {g.p[0] - origin[0], g.p[1] - origin[1], g.p[2] - origin[2]};
+      const Lanes rv[3] = {g.v[0] - frame_v[0], g.v[1] - frame_v[1], g.v[2] - frame_v[2]};
+      const Lanes rvg[3] = {g.v[0] - grown_v[0], g.v[1] - grown_v[1], g.v[2] - grown_v[2]};
+      d[c] = dot(rel, axes[c]);
+      w[c] = dot(rv, axes[c]);
+      wg[c] = dot(rvg, axes[c]);
+    }
+    int box_bits = lanes::bits(far.box);
+    if (box_bits != 3) {
+      const Lanes reach = a_l1 * (t * t) + acc.reach_m;
+      box_bits |= lanes::bits(box_clear(d, w, acc, lo, hi, g.radius, t, reach));
+    }
+    int grown_bits = lanes::bits(far.grown);
+    if (grown_bits != 3) {
+      const Lanes tg = lanes::min(window, t);
+      const Lanes reach = a_l1 * (tg * tg) + grown_acc.reach_m;
+      grown_bits |= lanes::bits(box_clear(d, wg, grown_acc, glo, ghi, g.radius, tg, reach));
+    }
+    clears[i0] = static_cast<char>(box_bits & 1);
+    grown_clears[i0] = static_cast<char>(grown_bits & 1);
+    clears[i1] = static_cast<char>((box_bits >> 1) & 1);
+    grown_clears[i1] = static_cast<char>((grown_bits >> 1) & 1);
+    const int settled = box_bits & grown_bits;
+    unsettled[unsettled_count] = static_cast<std::int32_t>(i0);
+    unsettled_count += static_cast<std::size_t>(1 - (settled & 1));
+    if (j1 > j) {
+      unsettled[unsettled_count] = static_cast<std::int32_t>(i1);
+      unsettled_count += static_cast<std::size_t>(1 - ((settled >> 1) & 1));
+    }
+  }
+  unsettled_count_ = unsettled_count;
 }
 
 }  // namespace fragsim

@@ -108,4 +108,69 @@ class BoxClearance {
   std::vector<std::int32_t> doubt_;  // fragments the first stage left in doubt
 };
 
+// edge-min's whole rejection in one pass over the fragments: the protected box and, for the
+// robust camera models, the grown box, each over the fragment's own look-ahead rather than one
+// interval for all. A fragment's interval is edge-min's (EdgeMinStrategy::time_to_ground_s):
+// until its path y(t) = y + v_y t + half_gy t^2 comes down through ground + radius, within
+// [floor, cap]; computed here with the same operations in the same order, so the same number, and
+// a fragment at rest on the ground is examined for one step instead of the cap. The grown box's
+// interval is the smaller of that and the robust models' window.
+//
+// Two tiers. First, over every fragment, a distance bound in world coordinates (no change of
+// axes): a path that stays farther from the frame's origin than the box's farthest corner plus
+// the fragment's radius cannot touch the box (the argument is at its test in the .cpp). Then, for
+// the fragments it leaves in doubt, path_clears_box in the frame's axes for each box. Both only
+// ever answer "certainly clear".
+class TwoBoxClearance {
+ public:
+  // The first tier four lanes wide where the processor has AVX2, else two (the same answers).
+  TwoBoxClearance();
+  // For tests: the narrow lanes even where the wide ones are available (false).
+  void use_wide_lanes(bool wide);
+  struct Boxes {
+    BoxFrame frame;                                    // the protected box's frame
+    Eigen::Vector3d a_mps2 = Eigen::Vector3d::Zero();  // half the acceleration, in the frame's axes
+    Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
+    // Each path's interval: max(min(time to the ground, cap), floor).
+    double cap_s = 0.0;
+    double floor_s = 0.0;
+    double ground_m = 0.0;      // -infinity: no ground
+    double half_gy_mps2 = 0.0;  // half the world acceleration's y (the ground's normal)
+    // The grown box: the protected box grown by grow_m on every side, seen from a frame with the
+    // protected box's origin and axes but velocity grown_velocity_mps, over at most window_s.
+    bool grown = false;
+    Eigen::Vector3d grown_velocity_mps = Eigen::Vector3d::Zero();
+    double grow_m = 0.0;
+    double window_s = 0.0;
+  };
+  void run(std::span<const FragmentState> fragments, const Boxes& boxes);
+  // One flag per fragment: 1 when its path clears the protected box (clears), the grown box
+  // (grown_clears; all 1 without a grown box). Valid until the next run.
+  std::span<const char> clears() const { return {clears_.data(), size_}; }
+  std::span<const char> grown_clears() const { return {grown_clears_.data(), size_}; }
+  // The fragments not cleared of both, in increasing order.
+  std::span<const std::int32_t> unsettled() const { return {unsettled_.data(), unsettled_count_}; }
+  // The largest radius of the run's fragments (0 for none).
+  double max_radius_m() const { return max_radius_m_; }
+  // How many fragments the first tier left to the second.
+  std::size_t first_tier_doubts() const { return doubts_; }
+
+ private:
+  std::size_t size_ = 0;
+  std::vector<char> clears_;
+  std::vector<char> grown_clears_;
+  [[maybe_unused]] bool wide_ = false;  // unused where there are no wide lanes
+  std::vector<std::int32_t> doubt_;     // fragments the first tier left in doubt
+  std::vector<std::int32_t> unsettled_;
+  std::size_t unsettled_count_ = 0;
+  std::size_t doubts_ = 0;
+  double max_radius_m_ = 0.0;
+};
+
+// The first tier's bound on the interval of one path (TwoBoxClearance::Boxes): at least
+// max(min(EdgeMinStrategy::time_to_ground_s(y, v_y, half_gy, ground_m), cap), floor). For tests.
+double interval_bound_s(double y_m, double vy_mps, double half_gy_mps2, double ground_m,
+                        double cap_s, double floor_s);
+
 }  // namespace fragsim

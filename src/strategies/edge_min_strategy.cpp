@@ -5,10 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
-#include "strategies/first_root.hpp"
+#include "geometry/first_root.hpp"
 #include "strategies/force_cap.hpp"
 
 namespace fragsim {
@@ -315,6 +316,7 @@ double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half
 void EdgeMinStrategy::reset(int fragment_count) {
   last_force_N_.assign(static_cast<std::size_t>(std::max(fragment_count, 0)),
                        Eigen::Vector3d::Zero());
+  r_max_hint_m_ = -1.0;
 }
 
 void EdgeMinStrategy::carry_over(std::span<const int> previous) {
@@ -346,19 +348,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double front_m = std::max(cam.near_m, body.z()) + params_.margin_m;
   const double back_m = body.z() + params_.margin_m;
   // The look-ahead: each fragment's own, until it reaches the ground (below), within the cap and
-  // the shot's end when known. The rejection and the robust models' window use the largest.
+  // the shot's end when known. The robust models' window is cut to it; the rejection bounds it.
   const double cap_s = std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s);
   const double horizon_s = std::max(cap_s, ctx.dt_s);
   const Eigen::Vector3d half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
   const Eigen::Vector3d lo_m(-half_w_m, -half_h_m, -back_m);
   const Eigen::Vector3d hi_m(half_w_m, half_h_m, front_m);
-
-  // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
-  // that never has all three coordinates inside the box grown by the fragment's radius, with a
-  // margin the solves below agree with, is no threat. Most fragments end here.
-  const BoxFrame frame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
-  const std::span<const char> clears =
-      clearance_.run(ctx.fragments, frame, half_g, lo_m, hi_m, horizon_s);
 
   // The robust models' regions (see the header): about the constant-velocity path (bounded_accel)
   // and about the eye now (V_c; both models). Each grows by the chord of the view's turn.
@@ -380,21 +375,59 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
   // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
   const Inflation& reject_rho = use_accel ? accel_rho : ball_rho;
-  std::span<const char> grown_clears;
-  double look_s = 0.0;
-  if (robust && !ctx.fragments.empty()) {
-    double r_max_m = 0.0;
-    for (const FragmentState& f : ctx.fragments) r_max_m = std::max(r_max_m, f.radius_m);
-    look_s = look_ahead_s(reject_rho, std::min(half_w_m, half_h_m) + r_max_m, params_.a_max_mps2,
-                          ctx.dt_s, horizon_s);
-    const double grow_m = reject_rho.at(look_s);
-    const Eigen::Vector3d grow(grow_m, grow_m, grow_m);
-    const BoxFrame grown_frame{cam.eye_m,
-                               {cam.right, cam.up, cam.forward},
-                               use_accel ? ctx.camera_velocity_mps : Eigen::Vector3d::Zero()};
-    grown_clears =
-        grown_clearance_.run(ctx.fragments, grown_frame, half_g, lo_m - grow, hi_m + grow, look_s);
+  const double half_min_m = std::min(half_w_m, half_h_m);
+  const auto look_for = [&](double r_max_m) {
+    return look_ahead_s(reject_rho, half_min_m + r_max_m, params_.a_max_mps2, ctx.dt_s, horizon_s);
+  };
+
+  // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
+  // that never has all three coordinates inside the box grown by the fragment's radius, with a
+  // margin the solves below agree with, over the fragment's own look-ahead, is no threat; for the
+  // robust models likewise the grown box over the window (section 4 of docs/camera_models.md).
+  // Most fragments end here.
+  const std::size_t n = ctx.fragments.size();
+  TwoBoxClearance::Boxes boxes;
+  boxes.frame = BoxFrame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
+  boxes.a_mps2 = half_g;
+  boxes.lo_m = lo_m;
+  boxes.hi_m = hi_m;
+  boxes.cap_s = cap_s;
+  boxes.floor_s = ctx.dt_s;
+  boxes.ground_m = ctx.ground_height_m;
+  boxes.half_gy_mps2 = 0.5 * ctx.gravity_mps2.y();
+  boxes.grown = robust && n > 0;
+  boxes.grown_velocity_mps = use_accel ? ctx.camera_velocity_mps : Eigen::Vector3d::Zero();
+  // The window and the growth depend on the largest radius, known only after the pass: the last
+  // step's is used (a window and growth at least the solves' keep the rejection conservative, as
+  // both grow with the radius), and the pass repeated in the rare step whose fragments are larger.
+  // The hint changes how fast a step is, never what it answers.
+  double r_hint_m = r_max_hint_m_;
+  const auto set_window = [&](double r_max_m) {
+    boxes.window_s = look_for(r_max_m);
+    boxes.grow_m = reject_rho.at(boxes.window_s);
+  };
+  if (boxes.grown) {
+    if (!(r_hint_m >= 0.0)) {
+      r_hint_m = 0.0;
+      for (const FragmentState& f : ctx.fragments) r_hint_m = std::max(r_hint_m, f.radius_m);
+    }
+    set_window(r_hint_m);
   }
+  clearance_.run(ctx.fragments, boxes);
+  double look_s = 0.0;
+  if (boxes.grown) {
+    const double r_max_m = clearance_.max_radius_m();
+    if (r_max_m > r_hint_m) {
+      set_window(r_max_m);
+      clearance_.run(ctx.fragments, boxes);
+    }
+    r_max_hint_m_ = r_max_m;
+    look_s = look_for(r_max_m);
+  }
+  const std::span<const char> clears = clearance_.clears();
+  const std::span<const char> grown_clears = clearance_.grown_clears();
+  const std::span<const std::int32_t> unsettled = clearance_.unsettled();
+  out.rejected_cheaply = static_cast<int>(n - unsettled.size());
 
   // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
   // back (the camera's forward axis tilted toward the ground can).
@@ -414,12 +447,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   // a plan until arrival: dropping it half way loses what it already did, and the urgent ones,
   // which a stale push could fail, are the ones solved). Without a budget nothing here runs.
   const bool budget = params_.max_solves > 0;
-  const std::size_t n = ctx.fragments.size();
   if (budget) {
     if (last_force_N_.size() != n) last_force_N_.assign(n, Eigen::Vector3d::Zero());
     deferred_.assign(n, 0);
     queue_.clear();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (const std::int32_t u : unsettled) {
+      const auto i = static_cast<std::size_t>(u);
       if (!needs_solve(i)) continue;
       // Time to arrival: distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w;
       // a fragment not closing in is last (+inf).
@@ -427,15 +460,17 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       const Eigen::Vector3d d = f.position_m - cam.eye_m;
       const double closing = -d.dot(f.velocity_mps - ctx.camera_velocity_mps);
       const double arrival_s = closing > 0.0 ? d.squaredNorm() / closing : kInf;
-      queue_.push_back({arrival_s, static_cast<int>(i)});
+      // Threats to the protected box on the current path (not cleared of it) before those only
+      // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
+      queue_.push_back({clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});
     }
     const auto cap = static_cast<std::size_t>(params_.max_solves);
     if (queue_.size() > cap) {
-      // (arrival, index) is a total order: the same set is solved whatever the sort does.
+      // (tier, arrival, index) is a total order: the same set is solved whatever the sort does.
       std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
                        queue_.end());
       for (std::size_t k = cap; k < queue_.size(); ++k) {
-        deferred_[static_cast<std::size_t>(queue_[k].second)] = 1;
+        deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
       }
       out.deferred = static_cast<int>(queue_.size() - cap);
     }
@@ -519,6 +554,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                  params_.a_max_mps2);
   };
 
+  if (!budget) {
+    for (const std::int32_t i : unsettled) {
+      solve(static_cast<std::size_t>(i), grown_clears[static_cast<std::size_t>(i)] != 0);
+    }
+    return;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     if (budget && deferred_[i]) {
       if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});

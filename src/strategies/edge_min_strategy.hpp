@@ -32,6 +32,7 @@
 // region: it still holds, since reachable does not depend on A at all.
 
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -69,14 +70,14 @@ class EdgeMinStrategy final : public Strategy {
 
  private:
   EdgeMinParams params_;
-  // Work space kept between steps; holds no state of the run. The second rejects against the
-  // grown box of the robust models.
-  BoxClearance clearance_;
-  BoxClearance grown_clearance_;
+  // Work space kept between steps; holds no state of the run (the largest radius of the last
+  // step is a hint for the rejection's window: it decides how fast a step is, not its answer).
+  TwoBoxClearance clearance_;
+  double r_max_hint_m_ = -1.0;  // none yet
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
   std::vector<Eigen::Vector3d> last_force_N_;
-  std::vector<std::pair<double, int>> queue_;
+  std::vector<std::tuple<int, double, int>> queue_;  // (tier, arrival, fragment)
   std::vector<char> deferred_;
 };
 

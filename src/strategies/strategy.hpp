@@ -48,6 +48,8 @@ struct StepOutput {
   std::vector<int> capped;           // fragments whose force the acceleration cap reduced
   int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
   int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
+  // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
+  int rejected_cheaply = 0;
 
   void clear() {
     forces.clear();
@@ -56,6 +58,7 @@ struct StepOutput {
     capped.clear();
     guarded = 0;
     deferred = 0;
+    rejected_cheaply = 0;
   }
 };
 

@@ -244,6 +244,7 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   EXPECT_EQ(stats.pushed, 1);
   EXPECT_EQ(stats.capped, 0);
   EXPECT_EQ(stats.new_ids, 1);
+  EXPECT_EQ(stats.rejected_cheaply, 0);  // a threat: only the exact solve settles it
 
   // The same as the tool's EdgeMinStrategy given the same context, to the bit.
   std::vector<fragsim::FragmentState> states;
@@ -252,6 +253,35 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   strategy.step(context_for(in, states), out);
   const std::vector<fragsim_vec3> tool = dense(out, 1);
   EXPECT_EQ(std::memcmp(&tool[0], &forces[0], sizeof(fragsim_vec3)), 0);
+}
+
+// Fragments 20 m behind a still camera (+z; it looks down -z), flying away at 1 m/s with no
+// gravity, are within 20 + 3 m of the eye at most over the 3 s look-ahead and never nearer than
+// 20 m: far outside the protected box (its farthest corner 0.32 m away) and the grown one, so
+// the cheap rejection settles every one. A fifth fired at the lens (the case above) is not.
+TEST(ControlApi, StatsCountTheFragmentsRejectedCheaply) {
+  std::vector<fragsim_fragment> frags;
+  for (int i = 0; i < 4; ++i) frags.push_back(fragment(0.3 * i, 0.0, 20.0, 0.0, 0.0, 1.0, 10 + i));
+  for (const fragsim_camera_model model : {FRAGSIM_CAMERA_CONSTANT, FRAGSIM_CAMERA_BOUNDED_ACCEL}) {
+    fragsim_controller_def def = fragsim_default_controller_def();
+    def.edge_min.camera_model = model;
+    Controller c(def);
+    std::vector<fragsim_fragment> all = frags;
+    fragsim_step_input in = still_input(all);
+    std::vector<fragsim_vec3> forces(all.size());
+    fragsim_step_stats stats{};
+    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    EXPECT_EQ(stats.rejected_cheaply, 4);
+    EXPECT_EQ(stats.candidates, 0);
+    EXPECT_EQ(stats.pushed, 0);
+
+    all.push_back(fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42));
+    in = still_input(all);
+    forces.resize(all.size());
+    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    EXPECT_EQ(stats.rejected_cheaply, 4);
+    EXPECT_EQ(stats.candidates, 1);
+  }
 }
 
 TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {

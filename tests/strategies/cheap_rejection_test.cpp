@@ -16,6 +16,7 @@
 
 #include "geometry/first_root.hpp"
 #include "strategies/collision_prediction.hpp"
+#include "strategies/edge_min_strategy.hpp"
 
 namespace fragsim {
 namespace {
@@ -425,6 +426,280 @@ TEST(BoxRejection, BatchInAMovingRotatedFrameIsConservative) {
     ASSERT_FALSE(enters_box(local[i], lo, hi, t_end)) << i;
   }
   EXPECT_GT(cleared, 0);
+}
+
+// ---- edge-min's two boxes (TwoBoxClearance) ----
+
+constexpr double kStep = 1.0 / 60.0;
+
+// edge-min's own look-ahead for a path: until it comes down through the ground, within [floor,
+// cap].
+double own_interval(double y, double vy, double half_gy, double ground, double cap, double floor) {
+  return std::max(std::min(EdgeMinStrategy::time_to_ground_s(y, vy, half_gy, ground), cap), floor);
+}
+
+TEST(TwoBoxRejection, IntervalBoundCoversEdgeMinsLookAhead) {
+  const double a = -4.905;
+  // At rest on the ground, or sunk into it by a contact's softness: one step.
+  EXPECT_EQ(interval_bound_s(0.0, 0.0, a, 0.0, 3.0, kStep), kStep);
+  EXPECT_EQ(interval_bound_s(-1e-4, 0.0, a, 0.0, 3.0, kStep), kStep);
+  EXPECT_EQ(interval_bound_s(-1e-4, -0.2, a, 0.0, 3.0, kStep), kStep);
+  // Dropped from 4.905 * 0.5^2 m: 0.5 s to the ground; the bound is within its 25%.
+  const double drop = interval_bound_s(4.905 * 0.25, 0.0, a, 0.0, 3.0, kStep);
+  EXPECT_GE(drop, 0.5);
+  EXPECT_LE(drop, 0.5 * 1.25);
+  // Thrown up at 4.905 m/s from the ground: back down after 1 s.
+  const double up = interval_bound_s(0.0, 4.905, a, 0.0, 3.0, kStep);
+  EXPECT_GE(up, 1.0);
+  EXPECT_LE(up, 1.25);
+  // No ground, no gravity, gravity up: the cap.
+  EXPECT_EQ(interval_bound_s(1.0, 0.0, a, -INFINITY, 3.0, kStep), 3.0);
+  EXPECT_EQ(interval_bound_s(1.0, 0.0, 0.0, 0.0, 3.0, kStep), 3.0);
+  EXPECT_EQ(interval_bound_s(1.0, 0.0, 2.0, 0.0, 3.0, kStep), 3.0);
+  EXPECT_EQ(interval_bound_s(NAN, 0.0, a, 0.0, 3.0, kStep), 3.0);
+
+  // Never below edge-min's own look-ahead, on paths from resting to thrown, tiny to huge.
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto signed_log = [&](double lo_exp, double hi_exp) {
+    const double m = std::pow(10.0, lo_exp + (hi_exp - lo_exp) * u(rng));
+    return u(rng) < 0.5 ? -m : m;
+  };
+  for (int n = 0; n < 200000; ++n) {
+    const double y = u(rng) < 0.2 ? signed_log(-320, 0) : signed_log(-6, 3);
+    const double vy =
+        u(rng) < 0.1 ? 0.0 : (u(rng) < 0.2 ? signed_log(-320, 160) : signed_log(-6, 2));
+    const double ground = u(rng) < 0.1 ? -INFINITY : signed_log(-3, 1);
+    const double half_gy = u(rng) < 0.1 ? signed_log(-3, 2) : -0.5 * 9.81;
+    const double cap = u(rng) < 0.1 ? INFINITY : 3.0 * u(rng);
+    const double own = own_interval(y, vy, half_gy, ground, cap, kStep);
+    ASSERT_GE(interval_bound_s(y, vy, half_gy, ground, cap, kStep), own)
+        << "y " << y << " vy " << vy << " ground " << ground << " a " << half_gy << " cap " << cap;
+  }
+}
+
+FragmentState state_at(const Eigen::Vector3d& p, const Eigen::Vector3d& v, double radius) {
+  FragmentState f;
+  f.position_m = p;
+  f.velocity_mps = v;
+  f.radius_m = radius;
+  return f;
+}
+
+// A still frame at the origin with the world's axes, kLo..kHi, no gravity, 3 s.
+TwoBoxClearance::Boxes still_boxes() {
+  TwoBoxClearance::Boxes b;
+  b.lo_m = kLo;
+  b.hi_m = kHi;
+  b.cap_s = 3.0;
+  b.floor_s = kStep;
+  b.ground_m = -INFINITY;
+  return b;
+}
+
+TEST(TwoBoxRejection, HandCasesForTheProtectedBox) {
+  TwoBoxClearance c;
+  const TwoBoxClearance::Boxes b = still_boxes();
+  // Straight at the box; beside it by 1 cm (x face at 0.3 m); 1 cm inside; along the face
+  // itself (tangent: it touches).
+  const std::vector<FragmentState> f{
+      state_at({0.0, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.0),
+      state_at({0.31, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.0),
+      state_at({0.29, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.0),
+      state_at({0.3, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.0),
+      // The same 1 cm beside, for a fragment of radius 5 cm at 0.36 m.
+      state_at({0.36, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.05),
+      state_at({0.34, 0.0, 10.0}, {0.0, 0.0, -10.0}, 0.05)};
+  c.run(f, b);
+  const std::vector<char> want{0, 1, 0, 0, 1, 0};
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    EXPECT_EQ(c.clears()[i], want[i]) << i;
+    EXPECT_EQ(c.grown_clears()[i], 1) << i;  // no grown box
+  }
+  EXPECT_EQ(std::vector<std::int32_t>(c.unsettled().begin(), c.unsettled().end()),
+            (std::vector<std::int32_t>{0, 2, 3, 5}));
+  EXPECT_EQ(c.max_radius_m(), 0.05);
+}
+
+TEST(TwoBoxRejection, TheFirstTierIsTheBallAroundTheFarthestCorner) {
+  // The farthest corner of kLo..kHi is |(0.3, 0.25, 0.25)| = 0.46368 m away: at rest 0.47 m out
+  // along x the first tier settles it; at 0.46 m (inside that ball, outside the box) it leaves it
+  // to the box test, which clears it. A radius r adds sqrt(3) r.
+  TwoBoxClearance c;
+  const TwoBoxClearance::Boxes b = still_boxes();
+  c.run(std::vector<FragmentState>{state_at({0.47, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0)}, b);
+  EXPECT_EQ(c.first_tier_doubts(), 0u);
+  EXPECT_EQ(c.clears()[0], 1);
+  c.run(std::vector<FragmentState>{state_at({0.46, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0.0)}, b);
+  EXPECT_EQ(c.first_tier_doubts(), 1u);
+  EXPECT_EQ(c.clears()[0], 1);
+  c.run(std::vector<FragmentState>{state_at({0.47 + 1.7320508 * 0.1, 0.0, 0.0},
+                                            Eigen::Vector3d::Zero(), 0.1)},
+        b);
+  EXPECT_EQ(c.first_tier_doubts(), 0u);
+  c.run(std::vector<FragmentState>{state_at({0.46 + 1.7320508 * 0.1, 0.0, 0.0},
+                                            Eigen::Vector3d::Zero(), 0.1)},
+        b);
+  EXPECT_EQ(c.first_tier_doubts(), 1u);
+  // Moving: 0.47 m out plus what 1 m/s (|v|_1) covers in 3 s.
+  c.run(std::vector<FragmentState>{state_at({3.48, 0.0, 0.0}, {-1.0, 0.0, 0.0}, 0.0)}, b);
+  EXPECT_EQ(c.first_tier_doubts(), 0u);
+  c.run(std::vector<FragmentState>{state_at({3.45, 0.0, 0.0}, {-1.0, 0.0, 0.0}, 0.0)}, b);
+  EXPECT_EQ(c.first_tier_doubts(), 1u);
+  EXPECT_EQ(c.clears()[0], 1);  // after 3 s it is still at 0.45 m, beyond the face
+}
+
+TEST(TwoBoxRejection, HandCasesForTheGrownBox) {
+  // Grown by 0.1 m (x face at 0.4 m) over 0.2 s, seen from a frame moving at the same velocity.
+  TwoBoxClearance c;
+  TwoBoxClearance::Boxes b = still_boxes();
+  b.grown = true;
+  b.grow_m = 0.1;
+  b.window_s = 0.2;
+  c.run(std::vector<FragmentState>{state_at({0.45, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
+                                   state_at({0.35, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
+                                   // reaches x = 0.4 at 0.2 s: touches the grown box
+                                   state_at({0.6, 0.0, 0.0}, {-1.0, 0.0, 0.0}, 0.0),
+                                   state_at({0.61, 0.0, 0.0}, {-1.0, 0.0, 0.0}, 0.0)},
+        b);
+  EXPECT_EQ(c.clears()[0], 1);
+  EXPECT_EQ(c.grown_clears()[0], 1);
+  EXPECT_EQ(c.clears()[1], 1);
+  EXPECT_EQ(c.grown_clears()[1], 0);
+  EXPECT_EQ(c.grown_clears()[2], 0);
+  EXPECT_EQ(c.clears()[2], 0);  // and it goes on into the box itself
+  EXPECT_EQ(c.grown_clears()[3], 1);
+  EXPECT_EQ(std::vector<std::int32_t>(c.unsettled().begin(), c.unsettled().end()),
+            (std::vector<std::int32_t>{1, 2, 3}));
+}
+
+TEST(TwoBoxRejection, APathIsExaminedUntilItReachesTheGround) {
+  // The box 0.5 m below a ground at y = 0 (its top face 0.25 m below it), gravity down. Resting
+  // on the ground right above it: edge-min examines one step (it falls 1.4 mm): clear. 1 cm up:
+  // 0.045 s to the ground, 1 cm of fall: clear. Without the ground it falls into the box.
+  TwoBoxClearance c;
+  TwoBoxClearance::Boxes b = still_boxes();
+  b.frame.origin_m = {0.0, -0.5, 0.0};
+  b.a_mps2 = 0.5 * kG;
+  b.half_gy_mps2 = 0.5 * kG.y();
+  b.ground_m = 0.0;
+  const std::vector<FragmentState> f{state_at({0.0, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
+                                     state_at({0.0, 0.01, 0.0}, Eigen::Vector3d::Zero(), 0.0)};
+  c.run(f, b);
+  EXPECT_EQ(c.clears()[0], 1);
+  EXPECT_EQ(c.clears()[1], 1);
+  b.ground_m = -INFINITY;
+  c.run(f, b);
+  EXPECT_EQ(c.clears()[0], 0);
+  EXPECT_EQ(c.clears()[1], 0);
+}
+
+// Random fragments near the box in a moving, rotated camera-like frame, with gravity, a ground,
+// a grown box seen from a still frame (reachable's) or the moving one.
+struct TwoBoxCase {
+  std::vector<FragmentState> fragments;
+  std::vector<RelativePath> local;        // in the frame, relative to its velocity
+  std::vector<RelativePath> local_grown;  // relative to the grown frame's velocity
+  TwoBoxClearance::Boxes boxes;
+  Eigen::Vector3d right, up, forward;
+};
+TwoBoxCase random_two_box_case(std::mt19937_64& rng, std::size_t n, bool still_grown) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  TwoBoxCase k;
+  k.forward = random_unit(rng);
+  k.right = k.forward.cross(Eigen::Vector3d::UnitY()).normalized();
+  k.up = k.right.cross(k.forward);
+  TwoBoxClearance::Boxes& b = k.boxes;
+  b.frame = BoxFrame{{1.0, 1.6, -2.0}, {k.right, k.up, k.forward}, {0.0, 0.0, -2.0}};
+  b.a_mps2 = Eigen::Vector3d(0.5 * kG.dot(k.right), 0.5 * kG.dot(k.up), 0.5 * kG.dot(k.forward));
+  Eigen::Vector3d lo;
+  Eigen::Vector3d hi;
+  double t_end = 0.0;
+  random_box_path(rng, lo, hi, t_end);
+  b.lo_m = lo;
+  b.hi_m = hi;
+  b.cap_s = t_end;
+  b.floor_s = kStep;
+  b.ground_m = 1.6 - 3.0 * u(rng);
+  b.half_gy_mps2 = 0.5 * kG.y();
+  b.grown = true;
+  b.grown_velocity_mps = still_grown ? Eigen::Vector3d::Zero() : b.frame.velocity_mps;
+  b.grow_m = 0.5 * u(rng);
+  b.window_s = t_end * u(rng);
+  const auto to_frame = [&](const Eigen::Vector3d& w) {
+    return Eigen::Vector3d(w.dot(k.right), w.dot(k.up), w.dot(k.forward));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Vector3d lo_i;
+    Eigen::Vector3d hi_i;
+    double t_i = 0.0;
+    RelativePath p = random_box_path(rng, lo_i, hi_i, t_i);
+    p.a_mps2 = b.a_mps2;
+    const Eigen::Vector3d world_p =
+        b.frame.origin_m + p.d_m.x() * k.right + p.d_m.y() * k.up + p.d_m.z() * k.forward;
+    const Eigen::Vector3d world_v =
+        b.frame.velocity_mps + p.v_mps.x() * k.right + p.v_mps.y() * k.up + p.v_mps.z() * k.forward;
+    const double r = u(rng) < 0.3 ? 0.0 : 0.2 * u(rng);
+    k.fragments.push_back(state_at(world_p, world_v, r));
+    k.local.push_back(RelativePath{to_frame(world_p - b.frame.origin_m),
+                                   to_frame(world_v - b.frame.velocity_mps), b.a_mps2});
+    k.local_grown.push_back(RelativePath{to_frame(world_p - b.frame.origin_m),
+                                         to_frame(world_v - b.grown_velocity_mps), b.a_mps2});
+  }
+  return k;
+}
+
+TEST(TwoBoxRejection, NeverClearsAPathThatEntersEitherBoxWithinItsOwnLookAhead) {
+  std::mt19937_64 rng(22);
+  int cleared = 0;
+  int grown_cleared = 0;
+  for (int round = 0; round < 40; ++round) {
+    const TwoBoxCase k = random_two_box_case(rng, 2000, round % 2 == 0);
+    TwoBoxClearance c;
+    c.run(k.fragments, k.boxes);
+    const TwoBoxClearance::Boxes& b = k.boxes;
+    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(b.grow_m);
+    for (std::size_t i = 0; i < k.fragments.size(); ++i) {
+      const FragmentState& f = k.fragments[i];
+      const Eigen::Vector3d r = Eigen::Vector3d::Constant(f.radius_m);
+      const double own = own_interval(f.position_m.y(), f.velocity_mps.y(), b.half_gy_mps2,
+                                      b.ground_m + f.radius_m, b.cap_s, b.floor_s);
+      if (c.clears()[i]) {
+        ++cleared;
+        ASSERT_FALSE(enters_box(k.local[i], b.lo_m - r, b.hi_m + r, own)) << round << " " << i;
+      }
+      if (c.grown_clears()[i]) {
+        ++grown_cleared;
+        ASSERT_FALSE(enters_box(k.local_grown[i], b.lo_m - grow - r, b.hi_m + grow + r,
+                                std::min(b.window_s, own)))
+            << round << " " << i;
+      }
+    }
+  }
+  EXPECT_GT(cleared, 0);
+  EXPECT_GT(grown_cleared, 0);
+}
+
+TEST(TwoBoxRejection, WideAndNarrowLanesAnswerTheSame) {
+  std::mt19937_64 rng(23);
+  for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3},
+                              std::size_t{5}, std::size_t{4097}}) {
+    for (const bool still_grown : {false, true}) {
+      const TwoBoxCase k = random_two_box_case(rng, n, still_grown);
+      TwoBoxClearance wide;
+      TwoBoxClearance narrow;
+      narrow.use_wide_lanes(false);
+      wide.run(k.fragments, k.boxes);
+      narrow.run(k.fragments, k.boxes);
+      ASSERT_EQ(wide.first_tier_doubts(), narrow.first_tier_doubts()) << n;
+      ASSERT_TRUE(std::equal(wide.clears().begin(), wide.clears().end(), narrow.clears().begin()));
+      ASSERT_TRUE(std::equal(wide.grown_clears().begin(), wide.grown_clears().end(),
+                             narrow.grown_clears().begin()));
+      ASSERT_TRUE(std::equal(wide.unsettled().begin(), wide.unsettled().end(),
+                             narrow.unsettled().begin(), narrow.unsettled().end()));
+      ASSERT_EQ(wide.max_radius_m(), narrow.max_radius_m());
+    }
+  }
 }
 
 }  // namespace
