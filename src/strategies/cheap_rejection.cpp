@@ -637,14 +637,14 @@ std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const First
 
 // ---- The ball, one path and many ---------------------------------------------------------------
 
-bool path_clears_ball(const RelativePath& path, double r0_m, double growth_mps, double t_end_s) {
+bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, double t_end_s) {
   // Both lanes carry this path: the same arithmetic, so the same answers, as BallClearance.
   Lanes d[3];
   Lanes v[3];
   Lanes a[3];
-  broadcast3(path.d_m, d);
-  broadcast3(path.v_mps, v);
-  broadcast3(path.a_mps2, a);
+  broadcast3(path.p0_m, d);
+  broadcast3(path.v0_mps, v);
+  broadcast3(path.half_accel_mps2(), a);
   const BallStart s = ball_start(d, v, a, lanes::broadcast(r0_m), lanes::broadcast(growth_mps),
                                  lanes::broadcast(t_end_s));
   if (!lanes::get(s.usable, 0)) return false;
@@ -725,19 +725,19 @@ std::span<const char> BallClearance::run(const Eigen::Vector3d& a_mps2, double g
 
 // ---- The box, one path and many ----------------------------------------------------------------
 
-bool path_clears_box(const RelativePath& path, const Eigen::Vector3d& lo_m,
-                     const Eigen::Vector3d& hi_m, double t_end_s) {
+bool path_clears_box(const Parabola& path, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
+                     double t_end_s) {
   // Both lanes carry this path: the same arithmetic, so the same answers, as BoxClearance.
   Lanes d[3];
   Lanes v[3];
   Lanes lo[3];
   Lanes hi[3];
-  broadcast3(path.d_m, d);
-  broadcast3(path.v_mps, v);
+  broadcast3(path.p0_m, d);
+  broadcast3(path.v0_mps, v);
   broadcast3(lo_m, lo);
   broadcast3(hi_m, hi);
-  const Mask clear = box_clear(d, v, box_accel(path.a_mps2, lo_m, hi_m, t_end_s), lo, hi, Lanes{},
-                               lanes::broadcast(t_end_s));
+  const Mask clear = box_clear(d, v, box_accel(path.half_accel_mps2(), lo_m, hi_m, t_end_s), lo, hi,
+                               Lanes{}, lanes::broadcast(t_end_s));
   return lanes::get(clear, 0);
 }
 

@@ -16,16 +16,13 @@
 #include <vector>
 
 #include "geometry/fragment_state.hpp"
+#include "geometry/parabola.hpp"
 
 namespace fragsim {
 
-// The path relative to the region's centre, x(t) = d + v t + a t^2 (a = g / 2), for t in [0,
-// t_end].
-struct RelativePath {
-  Eigen::Vector3d d_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d v_mps = Eigen::Vector3d::Zero();
-  Eigen::Vector3d a_mps2 = Eigen::Vector3d::Zero();  // half the acceleration
-};
+// The one-path tests take the path relative to the region's centre (Parabola::relative_to),
+// x(t) = d + v t + a t^2 with d = p0, v = v0 and a half its acceleration, for t in [0, t_end];
+// the batched ones take d and v per path and the half acceleration a (`a_mps2`) shared by all.
 
 // True when |x(t)| > r0 + growth t for every t in [0, t_end]: the path certainly stays outside
 // the ball (fixed when growth = 0, growing otherwise). Q(t) = |x(t)|^2 - (r0 + growth t)^2 is a
@@ -33,7 +30,7 @@ struct RelativePath {
 // so all of them above the margin prove Q > 0. The whole interval first, then halves, quarters
 // and eighths of it (de Casteljau's subdivision), only where still in doubt. False when in doubt
 // (non-finite input, t_end < 0, a path that starts inside or is inside at a piece's end).
-bool path_clears_ball(const RelativePath& path, double r0_m, double growth_mps, double t_end_s);
+bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, double t_end_s);
 
 // path_clears_ball for many paths under one acceleration and one growth.
 class BallClearance {
@@ -79,8 +76,8 @@ class BallClearance {
 // The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
 // three coordinates inside it: first each coordinate's range over the whole interval (ends and
 // vertex), then the x and y ranges over the times z is inside its slab. False when in doubt.
-bool path_clears_box(const RelativePath& path, const Eigen::Vector3d& lo_m,
-                     const Eigen::Vector3d& hi_m, double t_end_s);
+bool path_clears_box(const Parabola& path, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
+                     double t_end_s);
 
 // A moving frame for BoxClearance: paths given in world coordinates are seen from it, x along
 // axes[0], y along axes[1], z along axes[2] (a camera's right, up and forward).

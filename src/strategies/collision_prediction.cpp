@@ -64,12 +64,6 @@ BallSize ball_size(const ReachModel& model, double t_horizon_s) {
   return {model.radius_m, model.max_speed_mps};
 }
 
-// cheap_rejection's own form of the relative path stores half the acceleration.
-RelativePath relative_to(const BallisticPath& path, const Eigen::Vector3d& centre_m) {
-  const BallisticPath rel = path.relative_to(centre_m);
-  return {rel.p0_m, rel.v0_mps, rel.half_accel_mps2()};
-}
-
 }  // namespace
 
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
@@ -77,7 +71,7 @@ ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector
   // Cheap rejection before any root solve (cheap_rejection.hpp): most paths that stay clear of
   // the ball are settled by Q's Bernstein coefficients, with a margin the solve agrees with.
   const BallSize ball = ball_size(model, t_horizon_s);
-  if (path_clears_ball(relative_to(path, camera_m), ball.r0_m, ball.growth_mps, t_horizon_s)) {
+  if (path_clears_ball(path.relative_to(camera_m), ball.r0_m, ball.growth_mps, t_horizon_s)) {
     ContactPrediction out;
     out.t_horizon_s = t_horizon_s;
     return out;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geometry/first_root.hpp"
+#include "geometry/parabola.hpp"
 #include "strategies/force_cap.hpp"
 
 namespace fragsim {
@@ -18,10 +19,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // c0 + c1 t + c2 t^2: one camera-space coordinate of the relative path.
-struct Coord {
-  double c0, c1, c2;
-  double at(double t) const { return c0 + t * (c1 + t * c2); }
-};
+using Coord = AxisQuadratic;
 
 // A set of at most a few disjoint time intervals, in order. Room for every set the constant model
 // makes (a parabola meets a slab in at most two pieces; intersections of two and three such sets

@@ -23,16 +23,15 @@ namespace {
 
 const Eigen::Vector3d kG(0.0, -9.81, 0.0);
 
-RelativePath line(const Eigen::Vector3d& d, const Eigen::Vector3d& v,
-                  const Eigen::Vector3d& g = Eigen::Vector3d::Zero()) {
-  return {d, v, 0.5 * g};
+// The path relative to the region's centre.
+Parabola line(const Eigen::Vector3d& d, const Eigen::Vector3d& v,
+              const Eigen::Vector3d& g = Eigen::Vector3d::Zero()) {
+  return {d, v, g};
 }
 
 // The exact answer the strategies act on: first_nonpositive on the ball's quartic.
-bool enters_ball(const RelativePath& p, double r0, double growth, double t_end) {
-  const BallisticPath path{p.d_m, p.v_mps, 2.0 * p.a_mps2};
-  return first_nonpositive(ball_contact_quartic(path, Eigen::Vector3d::Zero(), r0, growth), 0.0,
-                           t_end)
+bool enters_ball(const Parabola& p, double r0, double growth, double t_end) {
+  return first_nonpositive(ball_contact_quartic(p, Eigen::Vector3d::Zero(), r0, growth), 0.0, t_end)
       .has_value();
 }
 
@@ -42,7 +41,7 @@ TEST(BallRejection, FiredStraightAtTheCentreIsNeverCleared) {
   // 10 m out, at the centre at tau = 1 s (aimed up by g / 2 against gravity), fixed and growing
   // ball.
   for (const Eigen::Vector3d& g : {Eigen::Vector3d(Eigen::Vector3d::Zero()), kG}) {
-    const RelativePath p = line({0.0, 0.0, -10.0}, Eigen::Vector3d(0.0, 0.0, 10.0) - 0.5 * g, g);
+    const Parabola p = line({0.0, 0.0, -10.0}, Eigen::Vector3d(0.0, 0.0, 10.0) - 0.5 * g, g);
     EXPECT_FALSE(path_clears_ball(p, 0.3, 0.0, 3.0));
     EXPECT_FALSE(path_clears_ball(p, 0.3, 3.0, 3.0));
     EXPECT_TRUE(enters_ball(p, 0.3, 0.0, 3.0));
@@ -52,7 +51,7 @@ TEST(BallRejection, FiredStraightAtTheCentreIsNeverCleared) {
 TEST(BallRejection, MissByAKnownDistance) {
   // Along x, 2 m from the centre at its closest (tau = 5 s). A 1.99 m ball is missed by 1 cm,
   // a hundred times the margin: cleared. A 2.01 m ball is entered: not cleared.
-  const RelativePath p = line({-5.0, 2.0, 0.0}, {1.0, 0.0, 0.0});
+  const Parabola p = line({-5.0, 2.0, 0.0}, {1.0, 0.0, 0.0});
   EXPECT_TRUE(path_clears_ball(p, 1.99, 0.0, 10.0));
   EXPECT_FALSE(enters_ball(p, 1.99, 0.0, 10.0));
   EXPECT_FALSE(path_clears_ball(p, 2.01, 0.0, 10.0));
@@ -63,14 +62,14 @@ TEST(BallRejection, MissByAKnownDistance) {
   // Closest in the middle of one of the eighths of [0, 10] (tau = 5.625 s), where the Bernstein
   // bound is loosest: on that 1.25 s piece Q = (tau - 5.625)^2 + 4 - R^2 has coefficients down to
   // 4 - R^2 - 1.25^2 / 12, positive for a 5 cm miss (R = 1.95: 0.1975 - 0.130).
-  const RelativePath mid = line({-5.625, 2.0, 0.0}, {1.0, 0.0, 0.0});
+  const Parabola mid = line({-5.625, 2.0, 0.0}, {1.0, 0.0, 0.0});
   EXPECT_TRUE(path_clears_ball(mid, 1.95, 0.0, 10.0));
   EXPECT_FALSE(enters_ball(mid, 1.95, 0.0, 10.0));
 }
 
 TEST(BallRejection, TangentPathIsNotCleared) {
   // Exactly 1 m from the centre at tau = 5 s: the solve calls it a touch.
-  const RelativePath p = line({-5.0, 1.0, 0.0}, {1.0, 0.0, 0.0});
+  const Parabola p = line({-5.0, 1.0, 0.0}, {1.0, 0.0, 0.0});
   EXPECT_FALSE(path_clears_ball(p, 1.0, 0.0, 10.0));
   EXPECT_TRUE(enters_ball(p, 1.0, 0.0, 10.0));
 }
@@ -92,7 +91,7 @@ TEST(BallRejection, RecedingAndFallingAwayAreCleared) {
 
 TEST(BallRejection, FallingOntoTheBallAfterTheHorizonIsCleared) {
   // Dropped from 10 m onto a 1 m ball: it arrives at tau = sqrt(1.8) = 1.342 s (g = 10).
-  const RelativePath p = line({0.0, 10.0, 0.0}, Eigen::Vector3d::Zero(), {0.0, -10.0, 0.0});
+  const Parabola p = line({0.0, 10.0, 0.0}, Eigen::Vector3d::Zero(), {0.0, -10.0, 0.0});
   EXPECT_TRUE(path_clears_ball(p, 1.0, 0.0, 1.3));
   EXPECT_FALSE(path_clears_ball(p, 1.0, 0.0, 1.4));
 }
@@ -100,7 +99,7 @@ TEST(BallRejection, FallingOntoTheBallAfterTheHorizonIsCleared) {
 TEST(BallRejection, InDoubtOnBadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  const RelativePath far = line({0.0, 0.0, -100.0}, {0.0, 0.0, -1.0});
+  const Parabola far = line({0.0, 0.0, -100.0}, {0.0, 0.0, -1.0});
   EXPECT_TRUE(path_clears_ball(far, 1.0, 0.0, 3.0));
   EXPECT_FALSE(path_clears_ball(far, 1.0, 0.0, -1.0));
   EXPECT_FALSE(path_clears_ball(far, 1.0, 0.0, nan));
@@ -118,7 +117,7 @@ Eigen::Vector3d random_unit(std::mt19937_64& rng) {
 }
 
 struct BallCase {
-  RelativePath path;
+  Parabola path;
   double r0 = 0.0;
   double growth = 0.0;
   double t_end = 0.0;
@@ -166,7 +165,7 @@ BallCase random_ball_case(std::mt19937_64& rng, int family) {
   } else if (family == 3) {
     centre = path.at(k.t_end) - (k.r0 + k.growth * k.t_end + delta) * random_unit(rng);
   }
-  k.path = {path.p0_m - centre, path.v0_mps, 0.5 * path.accel_mps2};
+  k.path = {path.p0_m - centre, path.v0_mps, path.accel_mps2};
   return k;
 }
 
@@ -200,8 +199,8 @@ TEST(BallRejection, BatchAnswersAsOnePathAtATime) {
       const Eigen::Vector3d a = u(rng) < 0.5 ? Eigen::Vector3d(0.5 * kG) : Eigen::Vector3d::Zero();
       for (std::size_t i = 0; i < n; ++i) {
         cases[i] = random_ball_case(rng, static_cast<int>(i % 4));
-        cases[i].path.a_mps2 = a;
-        batch.set(i, cases[i].path.d_m, cases[i].path.v_mps, cases[i].r0, cases[i].t_end);
+        cases[i].path.accel_mps2 = 2.0 * a;
+        batch.set(i, cases[i].path.p0_m, cases[i].path.v0_mps, cases[i].r0, cases[i].t_end);
       }
       const auto clears = batch.run(a, growth);
       ASSERT_EQ(clears.size(), n);
@@ -220,23 +219,24 @@ TEST(BallRejection, BatchAnswersAsOnePathAtATime) {
 // the roots of each coordinate against each face (between consecutive break times nothing
 // changes), checked at the break times (with a tolerance far below the rejection's margin, so a
 // touch counts) and between them.
-bool enters_box(const RelativePath& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+bool enters_box(const Parabola& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                 double t_end) {
   std::vector<double> times{0.0, t_end};
   for (int i = 0; i < 3; ++i) {
     for (double face : {lo[i], hi[i]}) {
-      for (double r :
-           real_roots({p.d_m[i] - face, p.v_mps[i], p.a_mps2[i], 0.0, 0.0}, 0.0, t_end)) {
+      for (double r : real_roots({p.p0_m[i] - face, p.v0_mps[i], p.half_accel_mps2()[i], 0.0, 0.0},
+                                 0.0, t_end)) {
         times.push_back(r);
       }
     }
   }
   std::sort(times.begin(), times.end());
-  const double scale = p.d_m.lpNorm<1>() + p.v_mps.lpNorm<1>() * t_end +
-                       p.a_mps2.lpNorm<1>() * t_end * t_end + lo.lpNorm<1>() + hi.lpNorm<1>();
+  const double scale = p.p0_m.lpNorm<1>() + p.v0_mps.lpNorm<1>() * t_end +
+                       p.half_accel_mps2().lpNorm<1>() * t_end * t_end + lo.lpNorm<1>() +
+                       hi.lpNorm<1>();
   const auto inside = [&](double t, double tol) {
     for (int i = 0; i < 3; ++i) {
-      const double x = p.d_m[i] + t * (p.v_mps[i] + t * p.a_mps2[i]);
+      const double x = p.p0_m[i] + t * (p.v0_mps[i] + t * p.half_accel_mps2()[i]);
       if (x < lo[i] - tol || x > hi[i] + tol) return false;
     }
     return true;
@@ -254,7 +254,7 @@ const Eigen::Vector3d kHi(0.3, 0.25, 0.25);
 TEST(BoxRejection, FiredStraightAtTheBoxIsNeverCleared) {
   for (const Eigen::Vector3d& g : {Eigen::Vector3d(Eigen::Vector3d::Zero()), kG}) {
     // Aimed so that gravity is compensated: at the centre at tau = 1 s.
-    const RelativePath p = line({0.0, 0.0, 10.0}, Eigen::Vector3d(0.0, 0.0, -10.0) - 0.5 * g, g);
+    const Parabola p = line({0.0, 0.0, 10.0}, Eigen::Vector3d(0.0, 0.0, -10.0) - 0.5 * g, g);
     EXPECT_FALSE(path_clears_box(p, kLo, kHi, 3.0));
     EXPECT_TRUE(enters_box(p, kLo, kHi, 3.0));
   }
@@ -266,11 +266,11 @@ TEST(BoxRejection, PassingBesideByAKnownDistance) {
   EXPECT_FALSE(path_clears_box(line({0.29, 0.0, 10.0}, {0.0, 0.0, -10.0}), kLo, kHi, 3.0));
   // Moving sideways: at x = 0.29 + 0.5 tau it is inside the x slab only while z is still above the
   // box (z = 10 - 10 tau > 0.25 for tau < 0.975): the z window rules it out.
-  const RelativePath late = line({0.29, 0.0, 10.0}, {0.5, 0.0, -10.0});
+  const Parabola late = line({0.29, 0.0, 10.0}, {0.5, 0.0, -10.0});
   EXPECT_FALSE(enters_box(late, kLo, kHi, 3.0));
   EXPECT_TRUE(path_clears_box(late, kLo, kHi, 3.0));
   // Crossing the x slab while z passes the box: enters.
-  const RelativePath crossing = line({-0.5, 0.0, 10.0}, {0.5, 0.0, -10.0});
+  const Parabola crossing = line({-0.5, 0.0, 10.0}, {0.5, 0.0, -10.0});
   EXPECT_TRUE(enters_box(crossing, kLo, kHi, 3.0));
   EXPECT_FALSE(path_clears_box(crossing, kLo, kHi, 3.0));
 }
@@ -279,18 +279,18 @@ TEST(BoxRejection, GrazingTheTopFaceIsNotCleared) {
   // Thrown so that its apex, y = 0.25 exactly, is reached at tau = 1 s, when it is at the centre
   // in x and z: it touches the top face.
   const double vy = 9.81;
-  const RelativePath p = line({0.0, 0.25 - 0.5 * 9.81, 10.0}, {0.0, vy, -10.0}, kG);
+  const Parabola p = line({0.0, 0.25 - 0.5 * 9.81, 10.0}, {0.0, vy, -10.0}, kG);
   EXPECT_TRUE(enters_box(p, kLo, kHi, 3.0));
   EXPECT_FALSE(path_clears_box(p, kLo, kHi, 3.0));
   // Its apex 1 cm above the box: cleared.
-  const RelativePath above = line({0.0, 0.26 - 0.5 * 9.81, 10.0}, {0.0, vy, -10.0}, kG);
+  const Parabola above = line({0.0, 0.26 - 0.5 * 9.81, 10.0}, {0.0, vy, -10.0}, kG);
   EXPECT_FALSE(enters_box(above, kLo, kHi, 3.0));
   EXPECT_TRUE(path_clears_box(above, kLo, kHi, 3.0));
 }
 
 TEST(BoxRejection, InDoubtOnBadInput) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const RelativePath far = line({10.0, 0.0, 10.0}, {0.0, 0.0, 1.0});
+  const Parabola far = line({10.0, 0.0, 10.0}, {0.0, 0.0, 1.0});
   EXPECT_TRUE(path_clears_box(far, kLo, kHi, 3.0));
   EXPECT_FALSE(path_clears_box(far, kLo, kHi, -1.0));
   EXPECT_FALSE(path_clears_box(far, kLo, kHi, nan));
@@ -299,8 +299,8 @@ TEST(BoxRejection, InDoubtOnBadInput) {
 
 // Random paths near the box: aimed at a random point of the box grown by up to 1 m (so many pass
 // close by), possibly grazing a face at a random time within +-1e-13..1e-1 m.
-RelativePath random_box_path(std::mt19937_64& rng, Eigen::Vector3d& lo, Eigen::Vector3d& hi,
-                             double& t_end) {
+Parabola random_box_path(std::mt19937_64& rng, Eigen::Vector3d& lo, Eigen::Vector3d& hi,
+                         double& t_end) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const auto log_uniform = [&](double lo_exp, double hi_exp) {
     return std::pow(10.0, lo_exp + (hi_exp - lo_exp) * u(rng));
@@ -324,12 +324,12 @@ RelativePath random_box_path(std::mt19937_64& rng, Eigen::Vector3d& lo, Eigen::V
   const Eigen::Vector3d start = target + log_uniform(-1, 2) * random_unit(rng);
   // x(t_hit) = target; a grazing one has x'(t_hit) = 0 along the face's axis.
   Eigen::Vector3d v = (target - start) / std::max(t_hit, 1e-3) - 0.5 * g * t_hit;
-  RelativePath p{start, v, 0.5 * g};
+  Parabola p{start, v, 0.5 * g};
   if (face < 6) {
     const int axis = face / 2;
     // Vertex of that coordinate at t_hit, passing through target there.
-    p.v_mps[axis] = -2.0 * p.a_mps2[axis] * t_hit;
-    p.d_m[axis] = target[axis] - t_hit * (p.v_mps[axis] + t_hit * p.a_mps2[axis]);
+    p.v0_mps[axis] = -2.0 * p.half_accel_mps2()[axis] * t_hit;
+    p.p0_m[axis] = target[axis] - t_hit * (p.v0_mps[axis] + t_hit * p.half_accel_mps2()[axis]);
   }
   return p;
 }
@@ -342,7 +342,7 @@ TEST(BoxRejection, NeverClearsAPathThatEntersTheBox) {
     Eigen::Vector3d lo;
     Eigen::Vector3d hi;
     double t_end = 0.0;
-    const RelativePath p = random_box_path(rng, lo, hi, t_end);
+    const Parabola p = random_box_path(rng, lo, hi, t_end);
     const bool enters = enters_box(p, lo, hi, t_end);
     const bool clear = path_clears_box(p, lo, hi, t_end);
     ASSERT_FALSE(clear && enters) << "case " << n;
@@ -369,17 +369,17 @@ TEST(BoxRejection, BatchAnswersAsOnePathAtATime) {
     Eigen::Vector3d lo;
     Eigen::Vector3d hi;
     double t_end = 0.0;
-    std::vector<RelativePath> paths(n);
+    std::vector<Parabola> paths(n);
     std::vector<FragmentState> fragments(n);
     const Eigen::Vector3d a = 0.5 * 20.0 * u(rng) * random_unit(rng);
-    const RelativePath first = random_box_path(rng, lo, hi, t_end);  // fixes the box and t_end
+    const Parabola first = random_box_path(rng, lo, hi, t_end);  // fixes the box and t_end
     for (std::size_t i = 0; i < n; ++i) {
       Eigen::Vector3d lo_i;
       Eigen::Vector3d hi_i;
       double t_i = 0.0;
       paths[i] = i == 0 ? first : random_box_path(rng, lo_i, hi_i, t_i);
-      paths[i].a_mps2 = a;
-      fragments[i] = fragment_at(paths[i].d_m, paths[i].v_mps, u(rng) < 0.5 ? 0.0 : 0.2 * u(rng));
+      paths[i].accel_mps2 = 2.0 * a;
+      fragments[i] = fragment_at(paths[i].p0_m, paths[i].v0_mps, u(rng) < 0.5 ? 0.0 : 0.2 * u(rng));
     }
     const auto clears = batch.run(fragments, BoxFrame{}, a, lo, hi, t_end);
     ASSERT_EQ(clears.size(), n);
@@ -399,7 +399,7 @@ TEST(BoxRejection, BatchInAMovingRotatedFrameIsConservative) {
   const BoxFrame frame{{1.0, 1.6, -2.0}, {right, up, forward}, {0.0, 0.0, -2.0}};
   const Eigen::Vector3d a(0.5 * kG.dot(right), 0.5 * kG.dot(up), 0.5 * kG.dot(forward));
   const std::size_t n = 20001;
-  std::vector<RelativePath> local(n);
+  std::vector<Parabola> local(n);
   std::vector<FragmentState> fragments(n);
   Eigen::Vector3d lo;
   Eigen::Vector3d hi;
@@ -410,9 +410,9 @@ TEST(BoxRejection, BatchInAMovingRotatedFrameIsConservative) {
     Eigen::Vector3d hi_i;
     double t_i = 0.0;
     local[i] = random_box_path(rng, lo_i, hi_i, t_i);
-    local[i].a_mps2 = a;
-    const Eigen::Vector3d& d = local[i].d_m;
-    const Eigen::Vector3d& v = local[i].v_mps;
+    local[i].accel_mps2 = 2.0 * a;
+    const Eigen::Vector3d& d = local[i].p0_m;
+    const Eigen::Vector3d& v = local[i].v0_mps;
     fragments[i] =
         fragment_at(frame.origin_m + d.x() * right + d.y() * up + d.z() * forward,
                     frame.velocity_mps + v.x() * right + v.y() * up + v.z() * forward, 0.0);
@@ -598,8 +598,8 @@ TEST(TwoBoxRejection, APathIsExaminedUntilItReachesTheGround) {
 // a grown box seen from a still frame (reachable's) or the moving one.
 struct TwoBoxCase {
   std::vector<FragmentState> fragments;
-  std::vector<RelativePath> local;        // in the frame, relative to its velocity
-  std::vector<RelativePath> local_grown;  // relative to the grown frame's velocity
+  std::vector<Parabola> local;        // in the frame, relative to its velocity
+  std::vector<Parabola> local_grown;  // relative to the grown frame's velocity
   TwoBoxClearance::Boxes boxes;
   Eigen::Vector3d right, up, forward;
 };
@@ -633,18 +633,18 @@ TwoBoxCase random_two_box_case(std::mt19937_64& rng, std::size_t n, bool still_g
     Eigen::Vector3d lo_i;
     Eigen::Vector3d hi_i;
     double t_i = 0.0;
-    RelativePath p = random_box_path(rng, lo_i, hi_i, t_i);
-    p.a_mps2 = b.a_mps2;
+    Parabola p = random_box_path(rng, lo_i, hi_i, t_i);
+    p.accel_mps2 = 2.0 * b.a_mps2;
     const Eigen::Vector3d world_p =
-        b.frame.origin_m + p.d_m.x() * k.right + p.d_m.y() * k.up + p.d_m.z() * k.forward;
-    const Eigen::Vector3d world_v =
-        b.frame.velocity_mps + p.v_mps.x() * k.right + p.v_mps.y() * k.up + p.v_mps.z() * k.forward;
+        b.frame.origin_m + p.p0_m.x() * k.right + p.p0_m.y() * k.up + p.p0_m.z() * k.forward;
+    const Eigen::Vector3d world_v = b.frame.velocity_mps + p.v0_mps.x() * k.right +
+                                    p.v0_mps.y() * k.up + p.v0_mps.z() * k.forward;
     const double r = u(rng) < 0.3 ? 0.0 : 0.2 * u(rng);
     k.fragments.push_back(state_at(world_p, world_v, r));
-    k.local.push_back(RelativePath{to_frame(world_p - b.frame.origin_m),
-                                   to_frame(world_v - b.frame.velocity_mps), b.a_mps2});
-    k.local_grown.push_back(RelativePath{to_frame(world_p - b.frame.origin_m),
-                                         to_frame(world_v - b.grown_velocity_mps), b.a_mps2});
+    k.local.push_back(Parabola{to_frame(world_p - b.frame.origin_m),
+                               to_frame(world_v - b.frame.velocity_mps), 2.0 * b.a_mps2});
+    k.local_grown.push_back(Parabola{to_frame(world_p - b.frame.origin_m),
+                                     to_frame(world_v - b.grown_velocity_mps), 2.0 * b.a_mps2});
   }
   return k;
 }
