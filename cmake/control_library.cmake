@@ -22,6 +22,14 @@ foreach(line ${FRAGSIM_CONTROL_VERSION_LINES})
 endforeach()
 set(FRAGSIM_CONTROL_VERSION
   ${FRAGSIM_CONTROL_VERSION_MAJOR}.${FRAGSIM_CONTROL_VERSION_MINOR}.${FRAGSIM_CONTROL_VERSION_PATCH})
+# Before 1.0 every minor version may change the structs' layout (0.3 appended a field to
+# fragsim_step_stats), so the soname carries the minor: a program built against 0.2 is not loaded
+# with 0.3 and writing past its smaller struct. From 1.0 on, the major alone.
+if(FRAGSIM_CONTROL_VERSION_MAJOR EQUAL 0)
+  set(FRAGSIM_CONTROL_SOVERSION 0.${FRAGSIM_CONTROL_VERSION_MINOR})
+else()
+  set(FRAGSIM_CONTROL_SOVERSION ${FRAGSIM_CONTROL_VERSION_MAJOR})
+endif()
 
 file(GLOB FRAGSIM_CONTROL_API_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/control/*.cpp)
 add_library(fragsim_control_objects OBJECT
@@ -47,7 +55,7 @@ target_compile_definitions(fragsim_control_static INTERFACE FRAGSIM_CONTROL_STAT
 target_link_libraries(fragsim_control_static INTERFACE
   "$<$<NOT:$<LINK_LANGUAGE:CXX>>:stdc++>" "$<$<NOT:$<LINK_LANGUAGE:CXX>>:m>")
 set_target_properties(fragsim_control_shared PROPERTIES EXPORT_NAME control_shared
-  VERSION ${FRAGSIM_CONTROL_VERSION} SOVERSION ${FRAGSIM_CONTROL_VERSION_MAJOR})
+  VERSION ${FRAGSIM_CONTROL_VERSION} SOVERSION ${FRAGSIM_CONTROL_SOVERSION})
 set_target_properties(fragsim_control_static PROPERTIES EXPORT_NAME control_static)
 add_library(fragsim::control ALIAS fragsim_control_shared)
 

@@ -29,6 +29,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Before 1.0 a minor version may change the structs, so the shared library is named for it
+ * (libfragsim_control.so.0.3): a program built against another minor is not loaded with it. */
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
 #define FRAGSIM_CONTROL_VERSION_MINOR 3
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
