@@ -3,13 +3,18 @@
 #include <ode/ode.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
+#include <utility>
+
+#include "sim/world_probe.hpp"
 
 namespace fragsim {
 namespace {
@@ -63,6 +68,189 @@ void set_pose(dBodyID body, const Eigen::Vector3d& pos, const Eigen::Matrix3d& r
 }
 
 constexpr int kMaxContactsPerPair = 4;
+// A convex piece's face on the ground or on a box may have more than 4 corners; with only 4 of
+// them as contacts the piece would rest on part of its face and tip. Boxes keep 4, bit for bit.
+constexpr int kMaxConvexContacts = 8;
+
+// A fragment's convex hull in ODE's format (dCreateConvex keeps pointers to these arrays, so they
+// live as long as the world): planes (n, d), points, and per face its vertex count then indices.
+struct OdeHull {
+  std::vector<dReal> planes;
+  std::vector<dReal> points;
+  std::vector<unsigned int> polygons;
+};
+
+OdeHull to_ode(const ConvexShape& shape) {
+  OdeHull h;
+  for (std::size_t f = 0; f < shape.faces.size(); ++f) {
+    const Eigen::Vector3d& n = shape.normals[f];
+    h.planes.insert(h.planes.end(), {n.x(), n.y(), n.z(), shape.offsets_m[f]});
+    h.polygons.push_back(static_cast<unsigned int>(shape.faces[f].size()));
+    for (int v : shape.faces[f]) h.polygons.push_back(static_cast<unsigned int>(v));
+  }
+  for (const Eigen::Vector3d& v : shape.vertices_m)
+    h.points.insert(h.points.end(), {v.x(), v.y(), v.z()});
+  return h;
+}
+
+// A hull in the world frame: what the convex contact manifold below works on.
+struct WorldHull {
+  std::vector<Eigen::Vector3d> vertices_m;
+  const std::vector<std::vector<int>>* faces = nullptr;  // the body frame's, same indices
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> offsets_m;
+
+  // The face whose outward normal is closest to `direction`, and that cosine.
+  std::pair<std::size_t, double> facing(const Eigen::Vector3d& direction) const {
+    std::pair<std::size_t, double> best{0, -INFINITY};
+    for (std::size_t f = 0; f < normals.size(); ++f) {
+      const double c = normals[f].dot(direction);
+      if (c > best.second) best = {f, c};
+    }
+    return best;
+  }
+};
+
+Eigen::Matrix3d geom_rotation(dGeomID g) {
+  const dReal* r = dGeomGetRotation(g);
+  Eigen::Matrix3d m;
+  m << r[0], r[1], r[2], r[4], r[5], r[6], r[8], r[9], r[10];
+  return m;
+}
+
+// `vertices_m`, `normals` and `offsets_m` in the body frame of geom g, moved to the world.
+WorldHull place_hull(dGeomID g, const std::vector<Eigen::Vector3d>& vertices_m,
+                     const std::vector<std::vector<int>>& faces,
+                     const std::vector<Eigen::Vector3d>& normals,
+                     const std::vector<double>& offsets_m) {
+  const dReal* p = dGeomGetPosition(g);
+  const Eigen::Vector3d pos(p[0], p[1], p[2]);
+  const Eigen::Matrix3d rot = geom_rotation(g);
+  WorldHull h;
+  h.faces = &faces;
+  h.vertices_m.reserve(vertices_m.size());
+  for (const Eigen::Vector3d& v : vertices_m) h.vertices_m.push_back(pos + rot * v);
+  h.normals.reserve(normals.size());
+  h.offsets_m.reserve(normals.size());
+  for (std::size_t k = 0; k < normals.size(); ++k) {
+    const Eigen::Vector3d n = rot * normals[k];
+    h.normals.push_back(n);
+    h.offsets_m.push_back(offsets_m[k] + n.dot(pos));
+  }
+  return h;
+}
+
+// A box's corners (bit 0: +x, bit 1: +y, bit 2: +z) and faces, counter-clockwise from outside,
+// normals +x, -x, +y, -y, +z, -z.
+const std::vector<std::vector<int>>& box_faces() {
+  static const std::vector<std::vector<int>> faces = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
+                                                      {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
+  return faces;
+}
+
+WorldHull place_box(dGeomID g, const Eigen::Vector3d& half_m) {
+  std::vector<Eigen::Vector3d> vertices;
+  for (int i = 0; i < 8; ++i) {
+    vertices.emplace_back((i & 1) ? half_m.x() : -half_m.x(), (i & 2) ? half_m.y() : -half_m.y(),
+                          (i & 4) ? half_m.z() : -half_m.z());
+  }
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double> offsets;
+  for (int a = 0; a < 3; ++a) {
+    for (double sign : {1.0, -1.0}) {
+      normals.push_back(sign * Eigen::Vector3d::Unit(a));
+      offsets.push_back(half_m[a]);
+    }
+  }
+  return place_hull(g, vertices, box_faces(), normals, offsets);
+}
+
+// Below this cosine between the contact normal and the best face normal, the contact is an edge
+// or a corner, not a face, and one point is right.
+constexpr double kFaceContactCos = 0.7;
+
+// Contacts between convex a (g1) and convex-or-box b (g2). Debian's ODE 0.16 is built with libccd,
+// so its dispatch sends convex-box and convex-convex to libccd's MPR, which finds overlap, normal
+// and depth well but returns one point: a piece resting on a box then pivots on that point and
+// spins on it for ever (a 0.1 m convex cube on a static box: 2.7 rad/s after 10 s, 12 mm sunk,
+// where the same cube on the plane, whose collider returns every vertex below it, rests at once).
+// So MPR's answer is the gate and the normal, and the points are a face manifold as box-box
+// colliders make it: the face of either hull that best faces the other along the normal is the
+// reference, the other hull's face most opposed to it is clipped to the reference face's sides,
+// and what lies below the reference plane is kept, that deep. An edge or corner contact (no face
+// turned to the normal, or nothing left after clipping) keeps MPR's one point.
+int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& hb, int max_count,
+                    dContactGeom* out, int skip) {
+  dContactGeom mpr{};
+  if (dCollide(a, b, 1, &mpr, sizeof(dContactGeom)) == 0) return 0;
+  auto* bytes = reinterpret_cast<char*>(out);
+  auto at = [&](int i) { return reinterpret_cast<dContactGeom*>(bytes + i * skip); };
+  // ODE's normal points from g2 into g1.
+  const Eigen::Vector3d n(mpr.normal[0], mpr.normal[1], mpr.normal[2]);
+  const auto [face_b, cos_b] = hb.facing(n);
+  const auto [face_a, cos_a] = ha.facing(-n);
+  const bool b_refers = cos_b >= cos_a;
+  if (std::max(cos_a, cos_b) < kFaceContactCos) {
+    *at(0) = mpr;
+    return 1;
+  }
+  const WorldHull& ref = b_refers ? hb : ha;
+  const WorldHull& inc = b_refers ? ha : hb;
+  const std::size_t rf = b_refers ? face_b : face_a;
+  const Eigen::Vector3d& ref_normal = ref.normals[rf];
+  const std::vector<int>& inc_face = (*inc.faces)[inc.facing(-ref_normal).first];
+  std::vector<Eigen::Vector3d> poly;
+  for (int v : inc_face) poly.push_back(inc.vertices_m[static_cast<std::size_t>(v)]);
+  const std::vector<int>& ref_face = (*ref.faces)[rf];
+  std::vector<Eigen::Vector3d> clipped;
+  for (std::size_t e = 0; e < ref_face.size() && !poly.empty(); ++e) {
+    const Eigen::Vector3d& p = ref.vertices_m[static_cast<std::size_t>(ref_face[e])];
+    const Eigen::Vector3d& q =
+        ref.vertices_m[static_cast<std::size_t>(ref_face[(e + 1) % ref_face.size()])];
+    // Counter-clockwise about the outward normal: (q - p) x normal points out of the face.
+    const Eigen::Vector3d side = (q - p).cross(ref_normal);
+    clipped.clear();
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Eigen::Vector3d& x = poly[i];
+      const Eigen::Vector3d& y = poly[(i + 1) % poly.size()];
+      const double dx = side.dot(x - p);
+      const double dy = side.dot(y - p);
+      if (dx <= 0.0) clipped.push_back(x);
+      if ((dx < 0.0 && dy > 0.0) || (dx > 0.0 && dy < 0.0)) {
+        clipped.push_back(x + dx / (dx - dy) * (y - x));
+      }
+    }
+    std::swap(poly, clipped);
+  }
+  struct Point {
+    Eigen::Vector3d position_m;
+    double depth_m;
+  };
+  std::vector<Point> points;
+  for (const Eigen::Vector3d& x : poly) {
+    const double depth = ref.offsets_m[rf] - ref_normal.dot(x);
+    if (depth > 0.0) points.push_back({x, depth});
+  }
+  if (points.empty()) {
+    *at(0) = mpr;
+    return 1;
+  }
+  std::stable_sort(points.begin(), points.end(),
+                   [](const Point& p, const Point& q) { return p.depth_m > q.depth_m; });
+  const Eigen::Vector3d normal = b_refers ? ref_normal : Eigen::Vector3d(-ref_normal);
+  const int count = std::min(static_cast<int>(points.size()), max_count);
+  for (int i = 0; i < count; ++i) {
+    dContactGeom& c = *at(i);
+    c = mpr;
+    const Point& p = points[static_cast<std::size_t>(i)];
+    for (int k = 0; k < 3; ++k) {
+      c.pos[k] = p.position_m[k];
+      c.normal[k] = normal[k];
+    }
+    c.depth = p.depth_m;
+  }
+  return count;
+}
 
 // Slack added to the distance within which the camera (or its wall) wakes a culled fragment.
 constexpr double kWakeMargin_m = 0.05;
@@ -94,10 +282,17 @@ struct World::Impl {
   GeomTag ground_tag{GeomKind::kGround, -1};
   GeomTag sensor_tag{GeomKind::kCameraSensor, -1};
   GeomTag wall_tag{GeomKind::kWall, -1};
+  dGeomID ground_geom = nullptr;
+  dGeomID sensor_geom = nullptr;
+  dGeomID wall_geom = nullptr;
+  // Every shape a fragment uses, kept alive for the snapshots' raw pointers, and its arrays for
+  // ODE, one set per shape however many fragments share it.
+  std::vector<std::shared_ptr<const ConvexShape>> shapes;
+  std::map<const ConvexShape*, OdeHull> ode_hulls;
   dBodyID camera_body = nullptr;
   dBodyID wall_body = nullptr;
   std::optional<CameraWallSpec> wall;
-  std::vector<FragmentState> constant;  // extents, mass, radius
+  std::vector<FragmentState> constant;  // extents, shape, mass, radius
   std::vector<char> touched;
   std::vector<char> hit_flag;
   std::vector<int> hits;
@@ -192,6 +387,43 @@ struct World::Impl {
     static_cast<Impl*>(data)->on_pair(a, b);
   }
 
+  const OdeHull& ode_hull(const std::shared_ptr<const ConvexShape>& shape) {
+    auto [it, added] = ode_hulls.try_emplace(shape.get());
+    if (added) {
+      it->second = to_ode(*shape);
+      shapes.push_back(shape);
+    }
+    return it->second;
+  }
+
+  const ConvexShape* shape_of(const GeomTag* t) const {
+    return t->kind == GeomKind::kFragment ? constant[static_cast<std::size_t>(t->fragment)].shape
+                                          : nullptr;
+  }
+
+  WorldHull hull_of(dGeomID g, const GeomTag* t) const {
+    if (const ConvexShape* s = shape_of(t)) {
+      return place_hull(g, s->vertices_m, s->faces, s->normals, s->offsets_m);
+    }
+    if (t->kind == GeomKind::kWall) {
+      return place_box(g, 0.5 * Eigen::Vector3d(wall->width_m, wall->height_m, wall->thickness_m));
+    }
+    return place_box(g, constant[static_cast<std::size_t>(t->fragment)].half_extents_m);
+  }
+
+  // The contacts of fragment geom a with b, at most max_count. Boxes, the ground plane (ODE's
+  // convex-plane collider returns every vertex below the plane) and the sensor (which needs only
+  // whether they touch) go to dCollide as they are; a convex piece against a box or another piece
+  // to convex_manifold.
+  int collide(dGeomID a, const GeomTag* ta, dGeomID b, const GeomTag* tb, int max_count,
+              dContactGeom* out, int skip) const {
+    const bool convex = shape_of(ta) != nullptr || shape_of(tb) != nullptr;
+    if (!convex || tb->kind == GeomKind::kGround || tb->kind == GeomKind::kCameraSensor) {
+      return dCollide(a, b, max_count, out, skip);
+    }
+    return convex_manifold(a, hull_of(a, ta), b, hull_of(b, tb), max_count, out, skip);
+  }
+
   void on_pair(dGeomID a, dGeomID b) {
     const auto* ta = static_cast<const GeomTag*>(dGeomGetData(a));
     const auto* tb = static_cast<const GeomTag*>(dGeomGetData(b));
@@ -203,16 +435,19 @@ struct World::Impl {
     if (tb->kind == GeomKind::kGround && skip_sleeping_ground && !dBodyIsEnabled(dGeomGetBody(a))) {
       return;
     }
-    std::array<dContact, kMaxContactsPerPair> contact{};
+    std::array<dContact, kMaxConvexContacts> contact{};
     if (tb->kind == GeomKind::kCameraSensor) {
       // A sensor: record the touch, let the fragment pass through.
-      if (dCollide(a, b, 1, &contact[0].geom, sizeof(dContact)) > 0 && !hit_flag[ta->fragment]) {
+      if (collide(a, ta, b, tb, 1, &contact[0].geom, sizeof(dContact)) > 0 &&
+          !hit_flag[ta->fragment]) {
         hit_flag[ta->fragment] = 1;
         hits.push_back(ta->fragment);
       }
       return;
     }
-    const int n = dCollide(a, b, kMaxContactsPerPair, &contact[0].geom, sizeof(dContact));
+    const bool convex = shape_of(ta) != nullptr || shape_of(tb) != nullptr;
+    const int n = collide(a, ta, b, tb, convex ? kMaxConvexContacts : kMaxContactsPerPair,
+                          &contact[0].geom, sizeof(dContact));
     if (n == 0) return;
     double bounce = ground.restitution;
     double mu = ground.friction;
@@ -291,27 +526,58 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
     dBodyID body = dBodyCreate(w.world);
     dMass mass;
     const Eigen::Vector3d size = 2.0 * s.half_extents_m;
-    dMassSetBoxTotal(&mass, s.mass_kg, size.x(), size.y(), size.z());
+    if (s.shape) {
+      // The body frame is the shape's: centre of mass at the origin.
+      const Eigen::Matrix3d inertia_kgm2 = s.mass_kg * s.shape->inertia_per_kg_m2;
+      dMassSetParameters(&mass, s.mass_kg, 0.0, 0.0, 0.0, inertia_kgm2(0, 0), inertia_kgm2(1, 1),
+                         inertia_kgm2(2, 2), inertia_kgm2(0, 1), inertia_kgm2(0, 2),
+                         inertia_kgm2(1, 2));
+    } else {
+      dMassSetBoxTotal(&mass, s.mass_kg, size.x(), size.y(), size.z());
+    }
     dBodySetMass(body, &mass);
-    dBodySetPosition(body, s.position_m.x(), s.position_m.y(), s.position_m.z());
+    if (s.shape || s.rotation != Eigen::Matrix3d::Identity()) {
+      set_pose(body, s.position_m, s.rotation);
+    } else {
+      dBodySetPosition(body, s.position_m.x(), s.position_m.y(), s.position_m.z());
+    }
     dBodySetLinearVel(body, s.velocity_mps.x(), s.velocity_mps.y(), s.velocity_mps.z());
     dBodySetAngularVel(body, s.angular_velocity_radps.x(), s.angular_velocity_radps.y(),
                        s.angular_velocity_radps.z());
-    dGeomID geom = dCreateBox(w.fragment_space, size.x(), size.y(), size.z());
+    dGeomID geom = nullptr;
+    if (s.shape) {
+      const OdeHull& hull = w.ode_hull(s.shape);
+      geom = dCreateConvex(w.fragment_space, hull.planes.data(),
+                           static_cast<unsigned int>(s.shape->faces.size()), hull.points.data(),
+                           static_cast<unsigned int>(s.shape->vertices_m.size()),
+                           hull.polygons.data());
+    } else {
+      geom = dCreateBox(w.fragment_space, size.x(), size.y(), size.z());
+    }
     dGeomSetBody(geom, body);
     w.fragment_tags[i] = GeomTag{GeomKind::kFragment, static_cast<int>(i)};
     dGeomSetData(geom, &w.fragment_tags[i]);
     w.bodies.push_back(body);
     w.geoms.push_back(geom);
     FragmentState& c = w.constant[i];
-    c.half_extents_m = s.half_extents_m;
     c.mass_kg = s.mass_kg;
-    c.radius_m = s.half_extents_m.norm();
+    if (s.shape) {
+      // Every per-fragment test below and downstream that reads half extents or the radius (the
+      // view-volume cull and the camera's wake distance here; the metrics' boxes) reads a bound
+      // that holds the piece: conservative, never a miss.
+      c.shape = s.shape.get();
+      c.half_extents_m = s.shape->half_extents_m;
+      c.radius_m = s.shape->radius_m;
+    } else {
+      c.half_extents_m = s.half_extents_m;
+      c.radius_m = s.half_extents_m.norm();
+    }
   }
 
   if (scene.ground.enabled) {
     dGeomID plane = dCreatePlane(w.static_space, 0, 1, 0, scene.ground.height_m);
     dGeomSetData(plane, &w.ground_tag);
+    w.ground_geom = plane;
   }
   const Eigen::Vector3d& body = scene.camera.body_size_m;
   w.camera_body = dBodyCreate(w.world);
@@ -322,6 +588,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dGeomID sensor = dCreateBox(w.static_space, body.x(), body.y(), body.z());
   dGeomSetBody(sensor, w.camera_body);
   dGeomSetData(sensor, &w.sensor_tag);
+  w.sensor_geom = sensor;
   if (w.wall) {
     w.wall_body = dBodyCreate(w.world);
     dBodySetKinematic(w.wall_body);
@@ -333,6 +600,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
         dCreateBox(w.static_space, w.wall->width_m, w.wall->height_m, w.wall->thickness_m);
     dGeomSetBody(wall, w.wall_body);
     dGeomSetData(wall, &w.wall_tag);
+    w.wall_geom = wall;
   }
 }
 
@@ -447,6 +715,66 @@ int World::wall_contacts() const {
 
 long World::ode_messages() {
   return g_ode_messages.load();
+}
+
+std::vector<ProbeContact> WorldProbe::contacts(const World& world, int fragment, ProbeTarget target,
+                                               int other) {
+  const World::Impl& w = *world.impl_;
+  const auto i = static_cast<std::size_t>(fragment);
+  dGeomID b = nullptr;
+  const GeomTag* tb = nullptr;
+  switch (target) {
+    case ProbeTarget::kGround:
+      b = w.ground_geom;
+      tb = &w.ground_tag;
+      break;
+    case ProbeTarget::kCameraSensor:
+      b = w.sensor_geom;
+      tb = &w.sensor_tag;
+      break;
+    case ProbeTarget::kWall:
+      b = w.wall_geom;
+      tb = &w.wall_tag;
+      break;
+    case ProbeTarget::kFragment:
+      b = w.geoms[static_cast<std::size_t>(other)];
+      tb = &w.fragment_tags[static_cast<std::size_t>(other)];
+      break;
+  }
+  if (b == nullptr) return {};
+  std::array<dContactGeom, kMaxConvexContacts> raw{};
+  const int max_count = target == ProbeTarget::kCameraSensor ? 1
+                        : w.constant[i].shape != nullptr || w.shape_of(tb) != nullptr
+                            ? kMaxConvexContacts
+                            : kMaxContactsPerPair;
+  const int n = w.collide(w.geoms[i], &w.fragment_tags[i], b, tb, max_count, raw.data(),
+                          sizeof(dContactGeom));
+  std::vector<ProbeContact> out;
+  for (int k = 0; k < n; ++k) {
+    const dContactGeom& c = raw[static_cast<std::size_t>(k)];
+    // ODE's normal points from g2 into g1; the fragment may have been either.
+    const double sign = c.g1 == w.geoms[i] ? 1.0 : -1.0;
+    out.push_back({{c.pos[0], c.pos[1], c.pos[2]},
+                   sign * Eigen::Vector3d(c.normal[0], c.normal[1], c.normal[2]),
+                   c.depth});
+  }
+  return out;
+}
+
+ProbeMass WorldProbe::mass(const World& world, int fragment) {
+  dMass m;
+  dBodyGetMass(world.impl_->bodies[static_cast<std::size_t>(fragment)], &m);
+  ProbeMass out;
+  out.mass_kg = m.mass;
+  out.centre_m = {m.c[0], m.c[1], m.c[2]};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) out.inertia_kgm2(r, c) = m.I[r * 4 + c];
+  }
+  return out;
+}
+
+bool WorldProbe::is_convex(const World& world, int fragment) {
+  return dGeomGetClass(world.impl_->geoms[static_cast<std::size_t>(fragment)]) == dConvexClass;
 }
 
 std::string World::ode_version() {

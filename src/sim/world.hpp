@@ -1,5 +1,6 @@
 #pragma once
-// The physics world: the only place that knows about ODE. Fragments are dynamic boxes, the ground
+// The physics world: the only place that knows about ODE. Fragments are dynamic boxes or convex
+// pieces (FragmentSpawn::shape), the ground
 // a plane, the camera a kinematic body whose box is a sensor (touching it records a hit, nothing
 // bounces), and, when a strategy asks for one, a kinematic wall carried in front of the camera.
 
@@ -63,6 +64,7 @@ class World {
   static std::string ode_version();
 
  private:
+  friend struct WorldProbe;  // sim/world_probe.hpp, for tests
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
