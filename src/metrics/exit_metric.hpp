@@ -4,14 +4,15 @@
 // snapshots its exit is the near plane (its depth is now short of the near distance, or behind the
 // eye) or else the border its centre is furthest past; a later re-entry and exit replaces the
 // earlier one. A near miss is a centre path passing within near_miss_m of the eye by a fragment
-// whose box never met the near rectangle or the camera body (swept_box.hpp, or the physics'
-// sensor): the fly-by that makes the shot, as opposed to a clip.
+// whose box (a convex piece: its hull's camera-aligned box, not its looser body box) never met the
+// near rectangle or the camera body (swept_box.hpp, or the physics' sensor): the fly-by that makes
+// the shot, as opposed to a clip. The centre is a convex piece's centre of mass.
 
 #include <string_view>
 #include <vector>
 
-#include "metrics/run_summary.hpp"
 #include "geometry/swept_box.hpp"
+#include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 

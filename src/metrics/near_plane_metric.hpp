@@ -1,13 +1,14 @@
 #pragma once
 // Near-plane intersections and camera hits (METHOD.md section 6). A fragment intersects the near
-// plane in a step when its box meets the near rectangle at any time during the step's motion
-// (swept_box.hpp), tested with that step's near distance; a camera hit is a touch of the camera
-// body, reported by the physics' sensor or found by the same swept test.
+// plane in a step when its box (a convex piece: its hull's camera-aligned box) meets the near
+// rectangle at any time during the step's motion (swept_box.hpp), tested with that step's near
+// distance; a camera hit is a touch of the camera body, reported by the physics' sensor or found
+// by the same swept test.
 
 #include <vector>
 
-#include "metrics/run_summary.hpp"
 #include "geometry/swept_box.hpp"
+#include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 
 namespace fragsim {
