@@ -1,6 +1,7 @@
 #include "geometry/swept_box.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fragsim {
 
@@ -68,6 +69,124 @@ std::optional<double> sweep_meets_near_rectangle(const SweepEnd& a, const SweepE
               b.near_half_height_m + ep.y());
   if (iv.empty()) return std::nullopt;
   return iv.lo();
+}
+
+namespace {
+
+double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Andrew's monotone chain: p's hull, counter-clockwise, without collinear points (1 or 2 points
+// when degenerate). Sorts p.
+void convex_hull_2d(std::vector<Eigen::Vector2d>& p, std::vector<Eigen::Vector2d>& hull) {
+  std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+    return u.x() < v.x() || (u.x() == v.x() && u.y() < v.y());
+  });
+  hull.clear();
+  if (p.size() < 3) {
+    hull = p;
+    return;
+  }
+  hull.resize(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
+    hull[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross2(hull[k - 2], hull[k - 1], p[i]) <= 0.0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+}
+
+// Whether the convex polygon (counter-clockwise; or a point or a segment) meets |x| <= w, |y| <= h:
+// no separating axis among the rectangle's normals and the polygon's edge normals.
+bool polygon_meets_rectangle(const std::vector<Eigen::Vector2d>& poly, double w, double h) {
+  if (poly.empty()) return false;
+  Eigen::Vector2d lo = poly[0];
+  Eigen::Vector2d hi = poly[0];
+  for (const Eigen::Vector2d& p : poly) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (lo.x() > w || hi.x() < -w || lo.y() > h || hi.y() < -h) return false;
+  const std::size_t n = poly.size();
+  if (n < 2) return true;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d d = poly[(i + 1) % n] - poly[i];
+    // A polygon lies left of its edges; a segment may be separated on either side.
+    for (const double side : {1.0, -1.0}) {
+      if (n >= 3 && side < 0.0) continue;
+      const Eigen::Vector2d out = side * Eigen::Vector2d(d.y(), -d.x());
+      // The rectangle's corner farthest toward the polygon, against the edge's line.
+      if (-w * std::abs(out.x()) - h * std::abs(out.y()) > out.dot(poly[i])) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+bool HullSweep::meets_near_rectangle(const CameraPose& camera_a, const FragmentState& a,
+                                     const CameraPose& camera_b, const FragmentState& b) {
+  const double near_a = camera_a.near_m;
+  const double near_b = camera_b.near_m;
+  const double wa = camera_a.near_half_width_m();
+  const double ha = camera_a.near_half_height_m();
+  const double wb = camera_b.near_half_width_m();
+  const double hb = camera_b.near_half_height_m();
+  // The division by near(s) needs the rectangle's shape fixed while its distance changes; a
+  // camera whose field of view changes within the step keeps the conservative answer.
+  const bool fixed_near = near_a == near_b && wa == wb && ha == hb;
+  const double kw = std::max(wa / near_a, wb / near_b);
+  const double kh = std::max(ha / near_a, hb / near_b);
+  if (!fixed_near && (std::abs(wa / near_a - wb / near_b) > 1e-12 * kw ||
+                      std::abs(ha / near_a - hb / near_b) > 1e-12 * kh)) {
+    return true;
+  }
+  const auto offsets = [](const CameraPose& cam, const FragmentState& f,
+                          std::vector<Eigen::Vector3d>& out) {
+    const Eigen::Matrix3d m = body_to_camera(cam, f.rotation);
+    out.resize(f.shape->vertices_m.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = m * f.shape->vertices_m[i];
+  };
+  offsets(camera_a, a, offsets_a_m_);
+  offsets(camera_b, b, offsets_b_m_);
+  const Eigen::Vector3d ca = camera_a.to_camera(a.position_m);
+  const Eigen::Vector3d cb = camera_b.to_camera(b.position_m);
+  points_.clear();
+  for (const std::vector<Eigen::Vector3d>* w : {&offsets_a_m_, &offsets_b_m_}) {
+    for (const Eigen::Vector3d& o : *w) {
+      const Eigen::Vector3d pa = ca + o;
+      const Eigen::Vector3d pb = cb + o;
+      points_.emplace_back(0.0, pa.x(), pa.y(), pa.z() - near_a);
+      points_.emplace_back(1.0, pb.x(), pb.y(), pb.z() - near_b);
+    }
+  }
+  section_.clear();
+  const auto add = [&](const Eigen::Vector4d& p) {
+    if (fixed_near) {
+      section_.emplace_back(p[1], p[2]);
+    } else {
+      const double n = near_a + p[0] * (near_b - near_a);
+      section_.emplace_back(p[1] / n, p[2] / n);
+    }
+  };
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    const Eigen::Vector4d& u = points_[i];
+    if (u[3] == 0.0) add(u);
+    if (!(u[3] < 0.0)) continue;
+    for (const Eigen::Vector4d& v : points_) {
+      if (!(v[3] > 0.0)) continue;
+      const double t = u[3] / (u[3] - v[3]);
+      add(u + t * (v - u));
+    }
+  }
+  convex_hull_2d(section_, hull_);
+  return fixed_near ? polygon_meets_rectangle(hull_, wa, ha)
+                    : polygon_meets_rectangle(hull_, kw, kh);
 }
 
 std::optional<double> sweep_meets_camera_body(const SweepEnd& a, const SweepEnd& b,

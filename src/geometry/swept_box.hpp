@@ -6,11 +6,13 @@
 // thin target). A convex piece (FragmentState::shape) is bounded the same way by its hull's own
 // camera-aligned box (geometry/camera_hull.hpp), which reaches as far as its farthest vertex on
 // each side of each axis and no further: tighter than its body box, still conservative for the
-// polytope itself near the rectangle's corners and edges (where the hull's extreme vertex along
-// one axis is not at the near plane's depth).
+// polytope itself (where the hull's extreme vertex along one axis is not at the near plane's
+// depth, or lies beyond the rectangle along the other). HullSweep below is the exact test of the
+// polytope, for what that box flags.
 
 #include <Eigen/Core>
 #include <optional>
+#include <vector>
 
 #include "geometry/camera_box.hpp"
 #include "geometry/camera_hull.hpp"
@@ -51,6 +53,32 @@ SweepEnd sweep_end(const CameraPose& camera, const FragmentState& f);
 // The first step fraction at which the box (or the hull's box) meets the near rectangle, if it
 // does.
 std::optional<double> sweep_meets_near_rectangle(const SweepEnd& a, const SweepEnd& b);
+
+// The exact near-rectangle test of a convex piece (FragmentState::shape) over a step, for the
+// swept test's motion: the centre on the straight line between its camera-space positions, and
+// about it the hull of the piece's vertices in both end orientations (so a piece that does not
+// turn within the step is the polytope itself, translated; one that turns is bounded by both its
+// end poses, as the box's extents bound a box). Exact where sweep_meets_near_rectangle bounds the
+// hull by its camera-aligned box, which is what the metrics ask first, so this runs only on the
+// few pieces that box already flags.
+//
+// How: in (s, x, y, z) the swept piece is the convex hull of its vertices at s = 0 and at s = 1;
+// the near plane z = near(s) cuts it in the hull of the points where the segments between those
+// vertices cross the plane; dividing x and y by near(s) (a projective map, so hulls stay hulls)
+// makes the near rectangle one fixed rectangle, and the test is a 2-D separating-axis one.
+// Holds its scratch, so a metric that keeps one allocates nothing once it has grown.
+class HullSweep {
+ public:
+  bool meets_near_rectangle(const CameraPose& camera_a, const FragmentState& a,
+                            const CameraPose& camera_b, const FragmentState& b);
+
+ private:
+  std::vector<Eigen::Vector3d> offsets_a_m_;  // camera-space vertices about the centre, end a
+  std::vector<Eigen::Vector3d> offsets_b_m_;
+  std::vector<Eigen::Vector4d> points_;  // (s, x, y, z - near(s)) of the swept hull's vertices
+  std::vector<Eigen::Vector2d> section_;
+  std::vector<Eigen::Vector2d> hull_;
+};
 
 // The first step fraction at which the box meets a camera-aligned box of half size body_half_m
 // centred on the eye, if it does.
