@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -536,6 +537,31 @@ TEST(FrameRecorder, KeepsTheChosenStepsOfEachRunAsTheyWere) {
   EXPECT_EQ(frames.frames("edge"), nullptr);
   evaluate(scene, "edge", opts);
   EXPECT_EQ(frames.strategies(), (std::vector<std::string>{"none", "edge"}));
+}
+
+TEST(FrameRecorder, KeepsItsOwnCopyOfAConvexPiecesShape) {
+  // A run's shapes die with its simulation, before the frames are drawn: the recorder's frame
+  // must not point at them. Two fragments share one shape; the frame shares one copy too.
+  auto shape = std::make_unique<ConvexShape>(test::regular_tetrahedron(0.5));
+  const ConvexShape* original = shape.get();
+  std::vector<FragmentState> frags{test::shaped_fragment(*shape, {0.0, 0.0, -5.0}),
+                                   test::shaped_fragment(*shape, {1.0, 0.0, -5.0})};
+  FrameRecorder frames({0});
+  RunInfo info;
+  info.strategy = "none";
+  info.fragment_count = 2;
+  frames.begin(info, snapshot(square_camera(), frags));
+  const Image before = render(frags);
+  shape.reset();
+  const RecordedFrame* kept = frames.frame("none", 0);
+  ASSERT_NE(kept, nullptr);
+  const ConvexShape* copy = kept->fragments[0].shape;
+  ASSERT_NE(copy, nullptr);
+  EXPECT_NE(copy, original);
+  EXPECT_EQ(kept->fragments[1].shape, copy);
+  EXPECT_EQ(copy->vertices_m, test::regular_tetrahedron(0.5).vertices_m);
+  FrameRenderer r(sky_scene(), square_style());
+  EXPECT_EQ(r.render(kept->view()).bytes(), before.bytes());
 }
 
 TEST(ContactSheet, DefaultStepsAndCellsAreTheFrames) {
