@@ -65,23 +65,36 @@ void ExitMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
   last_exit_.assign(n, Exit::kNone);
   passed_close_.assign(n, 0);
   touched_.assign(n, 0);
+  prev_state_.assign(n, FragmentState{});
+  prev_camera_ = initial.camera;
   const double near_miss2 = near_miss_m_ * near_miss_m_;
   for (std::size_t i = 0; i < n; ++i) {
-    const SweepEnd e = sweep_end(initial.camera, initial.fragments[i]);
+    const FragmentState& f = initial.fragments[i];
+    const SweepEnd e = sweep_end(initial.camera, f);
     prev_[i] = e;
+    if (f.shape) prev_state_[i] = f;
     on_screen_[i] = on_screen(initial.camera, e.centre_m);
     passed_close_[i] = e.centre_m.squaredNorm() <= near_miss2;
     // A fragment spawned touching the camera was never a clean pass, whatever it does next.
-    touched_[i] = sweep_meets_near_rectangle(e, e) ||
+    touched_[i] = meets_near(initial.camera, f, initial.camera, f, e, e) ||
                   sweep_meets_camera_body(e, e, initial.camera_body_half_m);
   }
+}
+
+bool ExitMetric::meets_near(const CameraPose& camera_a, const FragmentState& a,
+                            const CameraPose& camera_b, const FragmentState& b, const SweepEnd& ea,
+                            const SweepEnd& eb) {
+  // The hull's box first: it is cheap and clears all but the pieces at the lens.
+  if (!sweep_meets_near_rectangle(ea, eb)) return false;
+  return !b.shape || hull_sweep_.meets_near_rectangle(camera_a, a, camera_b, b);
 }
 
 void ExitMetric::observe(const StepSnapshot& snap) {
   assert(snap.fragments.size() == prev_.size());
   const double near_miss2 = near_miss_m_ * near_miss_m_;
   for (std::size_t i = 0; i < prev_.size(); ++i) {
-    const SweepEnd now = sweep_end(snap.camera, snap.fragments[i]);
+    const FragmentState& f = snap.fragments[i];
+    const SweepEnd now = sweep_end(snap.camera, f);
     const bool visible = on_screen(snap.camera, now.centre_m);
     if (on_screen_[i] && !visible) last_exit_[i] = classify(snap.camera, now.centre_m);
     on_screen_[i] = visible;
@@ -89,12 +102,14 @@ void ExitMetric::observe(const StepSnapshot& snap) {
     if (!passed_close_[i] && segment_eye_distance2(prev_[i].centre_m, now.centre_m) <= near_miss2) {
       passed_close_[i] = 1;
     }
-    if (!touched_[i] && (sweep_meets_near_rectangle(prev_[i], now) ||
+    if (!touched_[i] && (meets_near(prev_camera_, prev_state_[i], snap.camera, f, prev_[i], now) ||
                          sweep_meets_camera_body(prev_[i], now, snap.camera_body_half_m))) {
       touched_[i] = 1;
     }
     prev_[i] = now;
+    if (f.shape) prev_state_[i] = f;
   }
+  prev_camera_ = snap.camera;
   for (int f : snap.camera_hits) {
     assert(f >= 0 && static_cast<std::size_t>(f) < touched_.size());
     touched_[static_cast<std::size_t>(f)] = 1;

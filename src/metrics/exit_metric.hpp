@@ -4,14 +4,16 @@
 // snapshots its exit is the near plane (its depth is now short of the near distance, or behind the
 // eye) or else the border its centre is furthest past; a later re-entry and exit replaces the
 // earlier one. A near miss is a centre path passing within near_miss_m of the eye by a fragment
-// whose box never met the near rectangle or the camera body (swept_box.hpp, or the physics'
-// sensor): the fly-by that makes the shot, as opposed to a clip.
+// whose box (a convex piece: the polytope for the near rectangle, its hull's camera-aligned box
+// for the camera body, never its looser body box) never met the near rectangle or the camera body
+// (swept_box.hpp, or the physics' sensor): the fly-by that makes the shot, as opposed to a clip.
+// The centre is a convex piece's centre of mass.
 
 #include <string_view>
 #include <vector>
 
-#include "metrics/run_summary.hpp"
 #include "geometry/swept_box.hpp"
+#include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 
@@ -45,8 +47,15 @@ class ExitMetric final : public RunObserver {
   bool touched(int fragment) const { return touched_[static_cast<std::size_t>(fragment)] != 0; }
 
  private:
+  // Whether the piece met the near rectangle between the two snapshots (ea, eb: its sweep ends).
+  bool meets_near(const CameraPose& camera_a, const FragmentState& a, const CameraPose& camera_b,
+                  const FragmentState& b, const SweepEnd& ea, const SweepEnd& eb);
+
   double near_miss_m_;
   std::vector<SweepEnd> prev_;
+  std::vector<FragmentState> prev_state_;  // the last snapshot's convex pieces (boxes not copied)
+  CameraPose prev_camera_;
+  HullSweep hull_sweep_;
   std::vector<char> on_screen_;
   std::vector<Exit> last_exit_;
   std::vector<char> passed_close_;

@@ -7,7 +7,12 @@ namespace fragsim {
 void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
   const auto n = static_cast<std::size_t>(info.fragment_count);
   prev_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) prev_[i] = sweep_end(initial.camera, initial.fragments[i]);
+  prev_state_.assign(n, FragmentState{});
+  for (std::size_t i = 0; i < n; ++i) {
+    prev_[i] = sweep_end(initial.camera, initial.fragments[i]);
+    if (initial.fragments[i].shape) prev_state_[i] = initial.fragments[i];
+  }
+  prev_camera_ = initial.camera;
   near_hit_.assign(n, 0);
   body_hit_.assign(n, 0);
   per_step_.clear();
@@ -18,8 +23,12 @@ void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
 void NearPlaneMetric::observe(const StepSnapshot& snap) {
   int count = 0;
   for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
-    const SweepEnd now = sweep_end(snap.camera, snap.fragments[i]);
-    if (sweep_meets_near_rectangle(prev_[i], now)) {
+    const FragmentState& f = snap.fragments[i];
+    const SweepEnd now = sweep_end(snap.camera, f);
+    // The hull's box first: it is cheap and clears all but the pieces at the lens.
+    if (sweep_meets_near_rectangle(prev_[i], now) &&
+        (!f.shape ||
+         hull_sweep_.meets_near_rectangle(prev_camera_, prev_state_[i], snap.camera, f))) {
       ++count;
       near_hit_[i] = 1;
     }
@@ -27,7 +36,9 @@ void NearPlaneMetric::observe(const StepSnapshot& snap) {
       body_hit_[i] = 1;
     }
     prev_[i] = now;
+    if (f.shape) prev_state_[i] = f;
   }
+  prev_camera_ = snap.camera;
   for (int f : snap.camera_hits) body_hit_[static_cast<std::size_t>(f)] = 1;
   per_step_.push_back(count);
   fragment_steps_ += count;

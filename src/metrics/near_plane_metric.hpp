@@ -1,13 +1,15 @@
 #pragma once
 // Near-plane intersections and camera hits (METHOD.md section 6). A fragment intersects the near
-// plane in a step when its box meets the near rectangle at any time during the step's motion
-// (swept_box.hpp), tested with that step's near distance; a camera hit is a touch of the camera
-// body, reported by the physics' sensor or found by the same swept test.
+// plane in a step when its box (a convex piece: the polytope itself, swept_box.hpp's HullSweep)
+// meets the near rectangle at any time during the step's motion (swept_box.hpp), tested with that
+// step's near distance; a camera hit is a touch of the camera body, reported by the physics'
+// sensor or found by the same swept test (for a convex piece, with its hull's camera-aligned
+// box: conservative).
 
 #include <vector>
 
-#include "metrics/run_summary.hpp"
 #include "geometry/swept_box.hpp"
+#include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 
 namespace fragsim {
@@ -27,6 +29,10 @@ class NearPlaneMetric final : public RunObserver {
 
  private:
   std::vector<SweepEnd> prev_;
+  // The last snapshot's convex pieces and camera, for the exact test (boxes are not copied).
+  std::vector<FragmentState> prev_state_;
+  CameraPose prev_camera_;
+  HullSweep hull_sweep_;
   std::vector<char> near_hit_;
   std::vector<char> body_hit_;
   std::vector<int> per_step_;

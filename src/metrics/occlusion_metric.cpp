@@ -10,6 +10,7 @@
 #include <numeric>
 
 #include "geometry/camera_box.hpp"
+#include "geometry/camera_hull.hpp"
 #include "geometry/frustum.hpp"
 
 namespace fragsim {
@@ -26,7 +27,8 @@ double cross(const ScreenPoint& o, const ScreenPoint& a, const ScreenPoint& b) {
 
 // Andrew's monotone chain over p[0..n), which it sorts in place. Writes the hull's vertices,
 // without collinear points or a repeated first vertex, to hull (room for 2 n) and returns their
-// count: 1 or 2 for a degenerate hull. Insertion sort, because n <= 14 and nothing may allocate.
+// count: 1 or 2 for a degenerate hull. Insertion sort, because n <= 14 for a box, a few dozen for
+// a hull, and nothing may allocate.
 int convex_hull(ScreenPoint* p, int n, ScreenPoint* hull) {
   for (int i = 1; i < n; ++i) {
     const ScreenPoint v = p[i];
@@ -167,6 +169,58 @@ int rasterise(const Projection& pr, const CameraPose& camera, const FragmentStat
   return fill_hull(hull.data(), h, width_px, height_px, coverage);
 }
 
+// Marks the pixels covered by one convex piece (FragmentState::shape), clipped at the near plane
+// and projected as the box above is, and returns how many it covers by itself. `cam_vertices` and
+// `points` are the caller's scratch, so a step allocates nothing once they have grown.
+int rasterise_hull(const Projection& pr, const CameraPose& camera, const FragmentState& f,
+                   int width_px, int height_px, std::uint8_t* coverage,
+                   std::vector<Eigen::Vector3d>& cam_vertices, std::vector<ScreenPoint>& points) {
+  hull_camera_vertices(camera, f, cam_vertices);
+  for (const Eigen::Vector3d& v : cam_vertices) {
+    if (!v.allFinite()) return 0;  // reported by the simulation's own checks
+  }
+  // Cheap culling: every vertex on the outer side of the near plane or of one side plane.
+  const auto outside = [&](const Eigen::Vector3d& n, double d) {
+    for (const Eigen::Vector3d& v : cam_vertices) {
+      if (!(n.dot(v) > d)) return false;
+    }
+    return true;
+  };
+  if (outside({0.0, 0.0, -1.0}, -pr.near_m)) return 0;
+  if (outside({1.0, 0.0, -pr.tan_x}, 0.0) || outside({-1.0, 0.0, -pr.tan_x}, 0.0) ||
+      outside({0.0, 1.0, -pr.tan_y}, 0.0) || outside({0.0, -1.0, -pr.tan_y}, 0.0)) {
+    return 0;
+  }
+  // As for the box: the part with z >= near is spanned by the vertices in front of the plane and
+  // the points where the hull's edges cross it.
+  points.clear();
+  for (const Eigen::Vector3d& v : cam_vertices) {
+    if (v.z() >= pr.near_m) points.push_back(pr.project(v));
+  }
+  if (points.size() < cam_vertices.size()) {
+    for (const std::vector<int>& face : f.shape->faces) {
+      for (std::size_t k = 0; k < face.size(); ++k) {
+        const int ia = face[k];
+        const int ib = face[k + 1 == face.size() ? 0 : k + 1];
+        // Every edge borders two faces, once in each direction: take it once.
+        if (ia > ib) continue;
+        const Eigen::Vector3d& a = cam_vertices[static_cast<std::size_t>(ia)];
+        const Eigen::Vector3d& b = cam_vertices[static_cast<std::size_t>(ib)];
+        if ((a.z() >= pr.near_m) == (b.z() >= pr.near_m)) continue;
+        const double t = (pr.near_m - a.z()) / (b.z() - a.z());
+        Eigen::Vector3d p = a + t * (b - a);
+        p.z() = pr.near_m;
+        points.push_back(pr.project(p));
+      }
+    }
+  }
+  if (points.empty()) return 0;
+  const std::size_t n = points.size();
+  points.resize(3 * n);  // the hull's room (2 n) after the n points
+  const int h = convex_hull(points.data(), static_cast<int>(n), points.data() + n);
+  return fill_hull(points.data() + n, h, width_px, height_px, coverage);
+}
+
 }  // namespace
 
 OcclusionMetric::OcclusionMetric(const MetricsDef& def)
@@ -205,8 +259,11 @@ void OcclusionMetric::observe(const StepSnapshot& snap) {
   const Projection pr = make_projection(snap.camera, width_px_, height_px_);
   int own_max = 0;
   for (const FragmentState& f : snap.fragments) {
-    own_max =
-        std::max(own_max, rasterise(pr, snap.camera, f, width_px_, height_px_, coverage_.data()));
+    const int own = f.shape
+                        ? rasterise_hull(pr, snap.camera, f, width_px_, height_px_,
+                                         coverage_.data(), hull_vertices_, hull_points_)
+                        : rasterise(pr, snap.camera, f, width_px_, height_px_, coverage_.data());
+    own_max = std::max(own_max, own);
   }
 
   const auto count = [this](int x0, int x1, int y0, int y1) {

@@ -1,5 +1,6 @@
 #pragma once
-// Screen occlusion (METHOD.md section 6). After every step each fragment's box is clipped at the
+// Screen occlusion (METHOD.md section 6). After every step each fragment's box (or, for a convex
+// piece, its hull: the vertices and the points where its edges cross the plane) is clipped at the
 // near plane in force then, projected, and its 2-D convex hull rasterised on a pixel grid; the
 // covered share of the viewport and of a central region (where the action is) form per-step
 // series, summarised as mean and max over the run, with the largest share one fragment covered.
@@ -10,9 +11,11 @@
 // centre lies inside the hull or on its boundary (closed hull). Only the near plane and the side
 // planes clip; the far plane does not (a fragment beyond it is a speck, not an occluder).
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
+#include "geometry/frustum.hpp"
 #include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
@@ -56,7 +59,9 @@ class OcclusionMetric final : public RunObserver {
   int central_x1_ = 0;
   int central_y0_ = 0;
   int central_y1_ = 0;
-  std::vector<std::uint8_t> coverage_;  // reused every step, so a step allocates nothing
+  std::vector<std::uint8_t> coverage_;          // reused every step, so a step allocates nothing
+  std::vector<Eigen::Vector3d> hull_vertices_;  // a convex piece's, in camera space (scratch)
+  std::vector<ScreenPoint> hull_points_;        // its clipped, projected points and hull (scratch)
   std::vector<double> viewport_share_;
   std::vector<double> central_share_;
   double single_max_ = 0.0;

@@ -41,11 +41,12 @@ void FrameRecorder::begin(const RunInfo& info, const StepSnapshot& initial) {
   auto it = std::find_if(runs_.begin(), runs_.end(),
                          [&](const Run& r) { return r.strategy == info.strategy; });
   if (it == runs_.end()) {
-    runs_.push_back({info.strategy, {}});
+    runs_.push_back({info.strategy, {}, {}});
     it = runs_.end() - 1;
   }
   current_ = &*it;
   current_->frames.clear();
+  current_->shapes.clear();
   keep(initial);
 }
 
@@ -56,7 +57,13 @@ void FrameRecorder::observe(const StepSnapshot& snap) {
 void FrameRecorder::keep(const StepSnapshot& snap) {
   assert(current_ && "begin() names the run");
   if (std::binary_search(steps_.begin(), steps_.end(), snap.step)) {
-    current_->frames.emplace_back(snap);
+    RecordedFrame& frame = current_->frames.emplace_back(snap);
+    for (FragmentState& f : frame.fragments) {
+      if (!f.shape) continue;
+      std::shared_ptr<const ConvexShape>& copy = current_->shapes[f.shape];
+      if (!copy) copy = std::make_shared<const ConvexShape>(*f.shape);
+      f.shape = copy.get();
+    }
   }
 }
 

@@ -3,6 +3,8 @@
 // run the metrics measured (no second simulation). Attach it to evaluate() or compare() as an
 // extra observer; it never changes the run.
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,7 +12,8 @@
 
 namespace fragsim {
 
-// An owned copy of a StepSnapshot's data.
+// An owned copy of a StepSnapshot's data. A fragment's shape is still a pointer; FrameRecorder
+// points it at a copy it owns.
 struct RecordedFrame {
   int step = 0;
   double t_s = 0.0;
@@ -47,6 +50,10 @@ class FrameRecorder final : public RunObserver {
   struct Run {
     std::string strategy;
     std::vector<RecordedFrame> frames;
+    // Copies of the convex shapes the frames show, by the run's own pointer: the run's shapes die
+    // with its simulation, and frames are drawn after it (a contact sheet of every strategy).
+    // Per run, since a later run's shapes may reuse a freed one's address.
+    std::map<const ConvexShape*, std::shared_ptr<const ConvexShape>> shapes;
   };
   void keep(const StepSnapshot& snap);
 

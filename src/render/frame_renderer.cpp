@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "geometry/camera_box.hpp"
+#include "geometry/camera_hull.hpp"
 
 namespace fragsim {
 
@@ -170,9 +172,112 @@ std::optional<CameraBox> view_box(const CameraPose& cam, const FragmentState& f)
   return b;
 }
 
+// A convex piece seen from `cam`: its camera-space vertices in `out`, or false when it cannot show
+// (the same tests as view_box, with the hull's own bounding sphere).
+bool view_hull(const CameraPose& cam, const FragmentState& f, std::vector<Eigen::Vector3d>& out) {
+  hull_camera_vertices(cam, f, out);
+  for (const Eigen::Vector3d& v : out) {
+    if (!v.allFinite()) return false;
+  }
+  return cam.frustum().sphere_may_show(cam.to_camera(f.position_m), f.shape->radius_m);
+}
+
+// Whether face `i` of the piece faces the eye at the origin: its plane n . x = d in the body frame
+// is n_c . x = n_c . c + d in camera space, and the eye is outside it. From the plane rather than
+// from a vertex, so every face of a thin piece gets one answer however its vertices round.
+bool hull_face_faces_eye(const Eigen::Matrix3d& body_to_cam, const Eigen::Vector3d& centre_m,
+                         const ConvexShape& shape, std::size_t i) {
+  return (body_to_cam * shape.normals[i]).dot(centre_m) + shape.offsets_m[i] < 0.0;
+}
+
+// Appends to pts where the piece's edges (camera-space vertices v) cross z = near_m, projected.
+void hull_cut_points(const Rasterizer& r, const ConvexShape& shape,
+                     const std::vector<Eigen::Vector3d>& v, double near_m,
+                     std::vector<ScreenPoint>& pts) {
+  for (const std::vector<int>& face : shape.faces) {
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const int ia = face[k];
+      const int ib = face[k + 1 == face.size() ? 0 : k + 1];
+      if (ia > ib) continue;  // each edge borders two faces, once each way: take it once
+      const Eigen::Vector3d& a = v[static_cast<std::size_t>(ia)];
+      const Eigen::Vector3d& b = v[static_cast<std::size_t>(ib)];
+      if ((a.z() >= near_m) == (b.z() >= near_m)) continue;
+      const double t = (near_m - a.z()) / (b.z() - a.z());
+      Eigen::Vector3d p = a + t * (b - a);
+      p.z() = near_m;
+      pts.push_back(r.project(p));
+    }
+  }
+}
+
+// The convex section's points in angular order around their mean, outlined.
+void draw_section(Image& image, ScreenPoint* pts, int n, int thickness_px) {
+  if (n < 3) return;
+  ScreenPoint mid;
+  for (int i = 0; i < n; ++i) {
+    mid.x += pts[i].x / n;
+    mid.y += pts[i].y / n;
+  }
+  std::sort(pts, pts + n, [&](const ScreenPoint& a, const ScreenPoint& b) {
+    return std::atan2(a.y - mid.y, a.x - mid.x) < std::atan2(b.y - mid.y, b.x - mid.x);
+  });
+  for (int i = 0; i < n; ++i) draw_line(image, pts[i], pts[(i + 1) % n], kCutColour, thickness_px);
+}
+
 }  // namespace
 
+void FrameRenderer::draw_hull_faces(int index, const FragmentState& f) {
+  const CameraPose& cam = raster_.camera();
+  if (!view_hull(cam, f, hull_vertices_)) return;
+  const ConvexShape& shape = *f.shape;
+  const Eigen::Matrix3d m = body_to_camera(cam, f.rotation);
+  const Eigen::Vector3d c = cam.to_camera(f.position_m);
+  const Rgb base = fragment_colour(index);
+  for (std::size_t i = 0; i < shape.faces.size(); ++i) {
+    const std::vector<int>& face = shape.faces[i];
+    if (face.size() < 3 || !hull_face_faces_eye(m, c, shape, i)) continue;  // back faces culled
+    const Rgb shade = shaded_colour(base, f.rotation * shape.normals[i]);
+    const Eigen::Vector3d& p0 = hull_vertices_[static_cast<std::size_t>(face[0])];
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {  // a fan: the face is convex
+      raster_.fill_triangle(p0, hull_vertices_[static_cast<std::size_t>(face[k])],
+                            hull_vertices_[static_cast<std::size_t>(face[k + 1])], shade);
+    }
+  }
+}
+
+void FrameRenderer::draw_hull_outline(const FragmentState& f) {
+  const CameraPose& cam = raster_.camera();
+  if (!view_hull(cam, f, hull_vertices_)) return;
+  const ConvexShape& shape = *f.shape;
+  const Eigen::Matrix3d m = body_to_camera(cam, f.rotation);
+  const Eigen::Vector3d c = cam.to_camera(f.position_m);
+  // The edges of the visible faces; an edge two visible faces share is drawn twice, to the same
+  // pixels.
+  for (std::size_t i = 0; i < shape.faces.size(); ++i) {
+    if (!hull_face_faces_eye(m, c, shape, i)) continue;
+    const std::vector<int>& face = shape.faces[i];
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      raster_.draw_segment(hull_vertices_[static_cast<std::size_t>(face[k])],
+                           hull_vertices_[static_cast<std::size_t>(face[(k + 1) % face.size()])],
+                           kCandidateColour, line_px_);
+    }
+  }
+}
+
+void FrameRenderer::draw_hull_cut(Image& image, const FragmentState& f) {
+  const CameraPose& cam = raster_.camera();
+  if (!view_hull(cam, f, hull_vertices_)) return;
+  hull_cut_points_.clear();
+  hull_cut_points(raster_, *f.shape, hull_vertices_, cam.near_m, hull_cut_points_);
+  draw_section(image, hull_cut_points_.data(), static_cast<int>(hull_cut_points_.size()),
+               2 * line_px_);
+}
+
 void FrameRenderer::draw_faces(int index, const FragmentState& f) {
+  if (f.shape) {
+    draw_hull_faces(index, f);
+    return;
+  }
   const std::optional<CameraBox> box = view_box(raster_.camera(), f);
   if (!box) return;
   const Rgb base = fragment_colour(index);
@@ -195,6 +300,10 @@ void FrameRenderer::draw_faces(int index, const FragmentState& f) {
 }
 
 void FrameRenderer::draw_outline(const FragmentState& f) {
+  if (f.shape) {
+    draw_hull_outline(f);
+    return;
+  }
   const std::optional<CameraBox> box = view_box(raster_.camera(), f);
   if (!box) return;
   // The edges of the visible faces: the edge along axis k from corner i is where the faces across
@@ -213,6 +322,10 @@ void FrameRenderer::draw_outline(const FragmentState& f) {
 }
 
 void FrameRenderer::draw_cut(Image& image, const FragmentState& f) {
+  if (f.shape) {
+    draw_hull_cut(image, f);
+    return;
+  }
   const CameraPose& cam = raster_.camera();
   const std::optional<CameraBox> box = view_box(cam, f);
   if (!box) return;
@@ -234,16 +347,7 @@ void FrameRenderer::draw_cut(Image& image, const FragmentState& f) {
       pts[n++] = raster_.project(p);
     }
   }
-  if (n < 3) return;
-  ScreenPoint mid;
-  for (int i = 0; i < n; ++i) {
-    mid.x += pts[i].x / n;
-    mid.y += pts[i].y / n;
-  }
-  std::sort(pts.begin(), pts.begin() + n, [&](const ScreenPoint& a, const ScreenPoint& b) {
-    return std::atan2(a.y - mid.y, a.x - mid.x) < std::atan2(b.y - mid.y, b.x - mid.x);
-  });
-  for (int i = 0; i < n; ++i) draw_line(image, pts[i], pts[(i + 1) % n], kCutColour, 2 * line_px_);
+  draw_section(image, pts.data(), n, 2 * line_px_);
 }
 
 void FrameRenderer::draw_force(Image& image, const FragmentState& f, const Eigen::Vector3d& force) {

@@ -1,13 +1,15 @@
 #pragma once
 // What the camera sees at one step: a snapshot (live or recorded) drawn by the software rasteriser.
 // The sky, the ground plane (a checker of 1 m squares out to the far plane, fading with the
-// distance), every fragment as a box with flat Lambert shading and its own colour, clipped at that
-// step's near plane with back faces culled (a fragment crossing it shows its cut: a hole), and
-// optional overlays drawn on top: the edge candidates' outlines, the applied forces as arrows, the
-// near plane's cut through each fragment it crosses and the occlusion metric's central region.
+// distance), every fragment as a box or its convex hull (FragmentState::shape), each face with flat
+// Lambert shading and the fragment's own colour, clipped at that step's near plane with back faces
+// culled (a fragment crossing it shows its cut: a hole), and optional overlays drawn on top: the
+// edge candidates' outlines, the applied forces as arrows, the near plane's cut through each
+// fragment it crosses and the occlusion metric's central region.
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <vector>
 
 #include "render/image.hpp"
 #include "render/rasterizer.hpp"
@@ -59,6 +61,10 @@ class FrameRenderer {
   void draw_outline(const FragmentState& f);
   void draw_cut(Image& image, const FragmentState& f);
   void draw_force(Image& image, const FragmentState& f, const Eigen::Vector3d& force_N);
+  // The same for a convex piece (FragmentState::shape): its faces, outline and cut.
+  void draw_hull_faces(int index, const FragmentState& f);
+  void draw_hull_outline(const FragmentState& f);
+  void draw_hull_cut(Image& image, const FragmentState& f);
 
   FrameStyle style_;
   bool ground_ = true;
@@ -66,6 +72,8 @@ class FrameRenderer {
   double central_share_ = 0.5;
   int line_px_ = 1;
   Rasterizer raster_;
+  std::vector<Eigen::Vector3d> hull_vertices_;  // scratch, reused from piece to piece
+  std::vector<ScreenPoint> hull_cut_points_;
 };
 
 }  // namespace fragsim

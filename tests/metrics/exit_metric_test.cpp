@@ -5,11 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "metrics/exit_metric.hpp"
 #include "metrics/run_summary.hpp"
+#include "support/convex_shapes.hpp"
 
 namespace fragsim {
 namespace {
@@ -215,6 +218,41 @@ TEST(ExitMetricNearMiss, CountsFragmentsNotSteps) {
   RunSummary s;
   m.fill(s);
   EXPECT_EQ(s.near_misses, 2);
+}
+
+TEST(ExitMetric, TetrahedronBesideTheLensIsANearMissWhereItsBoxWouldTouch) {
+  // The tetrahedron of circumradius R = 6 cm right of the lens, vertex 0 pointing away (+x), its
+  // centre at x = w + 0.01 + R / 3 (w the near half width): its nearest vertices miss the near
+  // rectangle by 1 cm, its centre passes x = 0.13 m from the eye: a near miss. Its body box, which
+  // reaches R to the left, would meet the rectangle and spoil it.
+  const double r = 0.06;
+  const ConvexShape t = test::regular_tetrahedron(r / std::sqrt(3.0));
+  const double w = 0.1 * std::tan(30.0 * kPi / 180.0) * 16.0 / 9.0;
+  const double x = w + 0.01 + r / 3.0;
+  const Eigen::Matrix3d rot =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::Ones(), Eigen::Vector3d::UnitX())
+          .toRotationMatrix();
+  const auto run = [&](const FragmentState& piece) {
+    MetricsDef def;
+    def.near_miss_m = 1.0;
+    ExitMetric metric(def);
+    std::vector<FragmentState> frag{piece};
+    StepSnapshot snap;
+    snap.camera_body_half_m = Eigen::Vector3d::Constant(0.001);
+    snap.fragments = frag;
+    const std::vector<double> depths{0.5, 0.25, 0.0, -0.25};
+    frag[0].position_m = {x, 0.0, -depths[0]};
+    metric.begin({nullptr, "test", 1, 3, kDt_s}, snap);
+    for (std::size_t k = 1; k < depths.size(); ++k) {
+      frag[0].position_m = {x, 0.0, -depths[k]};
+      snap.step = static_cast<int>(k);
+      metric.observe(snap);
+    }
+    return std::pair{metric.near_miss(0), metric.touched(0)};
+  };
+  const FragmentState piece = test::shaped_fragment(t, Eigen::Vector3d::Zero(), rot);
+  EXPECT_EQ(run(piece), std::pair(true, false));
+  EXPECT_EQ(run(test::as_box(piece)), std::pair(false, true));
 }
 
 }  // namespace

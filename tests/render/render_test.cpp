@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,6 +27,7 @@
 #include "render/frame_renderer.hpp"
 #include "render/image.hpp"
 #include "render/rasterizer.hpp"
+#include "support/convex_shapes.hpp"
 #include "support/test_scenes.hpp"
 
 namespace fragsim {
@@ -164,6 +167,132 @@ TEST(Frame, SquareFacingTheCameraCoversThePredictedRectangle) {
     }
   }
   EXPECT_GT(inside, 300);
+}
+
+// A convex piece's silhouette against the pixel-space convex polygon poly (counter-clockwise or
+// clockwise): pixels whose centre is more than 1 px inside are drawn, more than 1 px outside are
+// not, and the count is the polygon's area within its boundary's pixels (its perimeter).
+void expect_silhouette(const std::vector<std::vector<bool>>& d,
+                       const std::vector<Eigen::Vector2d>& poly) {
+  double area2 = 0.0;
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const Eigen::Vector2d& a = poly[i];
+    const Eigen::Vector2d& b = poly[(i + 1) % poly.size()];
+    area2 += a.x() * b.y() - a.y() * b.x();
+    perimeter += (b - a).norm();
+  }
+  const double sign = area2 > 0.0 ? 1.0 : -1.0;
+  int count = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      const Eigen::Vector2d p(x + 0.5, y + 0.5);
+      double inside_by = std::numeric_limits<double>::infinity();  // distance to the nearest edge
+      for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Eigen::Vector2d e = poly[(i + 1) % poly.size()] - poly[i];
+        const Eigen::Vector2d q = p - poly[i];
+        inside_by = std::min(inside_by, sign * (e.x() * q.y() - e.y() * q.x()) / e.norm());
+      }
+      if (inside_by > 1.0) {
+        EXPECT_TRUE(d[y][x]) << x << "," << y;
+      } else if (inside_by < -1.0) {
+        EXPECT_FALSE(d[y][x]) << x << "," << y;
+      }
+      count += d[y][x];
+    }
+  }
+  EXPECT_NEAR(count, 0.5 * std::abs(area2), perimeter);
+  EXPECT_GT(count, 300);
+}
+
+// Pixel coordinates of a camera-space point on the 200-pixel square frame.
+Eigen::Vector2d pixel(double x, double y, double depth) {
+  return {100.0 + 100.0 * x / depth, 100.0 - 100.0 * y / depth};
+}
+
+TEST(Frame, TetrahedronFaceOnShowsItsProjectedTriangle) {
+  // A regular tetrahedron of circumradius R = 1.5 m at depth 5, a face toward the camera (vertex
+  // 0 turned away, along -z): the face lies at depth 5 - R / 3 = 4.5, its vertices on a circle of
+  // radius 2 sqrt(2) R / 3 = sqrt(2) about the view axis, and the far vertex projects inside it,
+  // so the silhouette is that face's triangle.
+  const double a = 1.5 / std::sqrt(3.0);
+  const ConvexShape t = test::regular_tetrahedron(a);
+  const Eigen::Matrix3d rot =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::Ones(), -Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
+  const FragmentState f = test::shaped_fragment(t, {0.0, 0.0, -5.0}, rot);
+  const Image img = render({f});
+  std::vector<Eigen::Vector2d> tri;
+  for (const int i : t.faces[0]) {  // the face across from vertex 0
+    const Eigen::Vector3d w = f.position_m + rot * t.vertices_m[static_cast<std::size_t>(i)];
+    EXPECT_NEAR(-w.z(), 4.5, 1e-12);
+    EXPECT_NEAR(std::hypot(w.x(), w.y()), std::sqrt(2.0), 1e-12);
+    tri.push_back(pixel(w.x(), w.y(), -w.z()));
+  }
+  expect_silhouette(drawn(img), tri);
+  // It is one face, lit as a box face with that normal is (toward the camera).
+  EXPECT_EQ(img.at(100, 100), shaded_colour(fragment_colour(0), kTowardCamera));
+}
+
+TEST(Frame, TetrahedronEdgeOnShowsAQuadrilateral) {
+  // Unturned, the tetrahedron of half cube side a = 1 at depth 5 shows two edges: the one from
+  // (1, 1) to (-1, -1) at depth 4 and the one from (1, -1) to (-1, 1) at depth 6. Its silhouette is
+  // the kite with half diagonals 1 / 4 and 1 / 6 (x / z) along the two diagonals.
+  const ConvexShape t = test::regular_tetrahedron(1.0);
+  const FragmentState f = test::shaped_fragment(t, {0.0, 0.0, -5.0});
+  const std::vector<Eigen::Vector2d> kite{pixel(1.0, 1.0, 4.0), pixel(1.0, -1.0, 6.0),
+                                          pixel(-1.0, -1.0, 4.0), pixel(-1.0, 1.0, 6.0)};
+  expect_silhouette(drawn(render({f})), kite);
+}
+
+TEST(Frame, CubeHullDrawsAsItsBox) {
+  // The same turned cube as a box and as a hull: the same faces, shades and depths, so the same
+  // pixels but for a pixel centre within rounding of an edge (at most 1% of the ~1400 drawn).
+  const ConvexShape cube = test::box_hull(Eigen::Vector3d::Constant(0.6));
+  const Eigen::Matrix3d rot =
+      Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d(1.0, 2.0, 0.5).normalized()))
+          .toRotationMatrix();
+  const FragmentState hull = test::shaped_fragment(cube, {0.2, -0.1, -4.0}, rot);
+  const Image a = render({hull});
+  const Image b = render({test::as_box(hull)});
+  int differ = 0;
+  int drawn_px = 0;
+  const auto d = drawn(b);
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      differ += !(a.at(x, y) == b.at(x, y));
+      drawn_px += d[y][x];
+    }
+  }
+  EXPECT_GT(drawn_px, 1000);
+  EXPECT_LE(differ, drawn_px / 100);
+}
+
+TEST(Frame, TetrahedronCrossingTheNearPlaneShowsItsCut) {
+  // Vertex first through a near plane at 4.5 m: the plane cuts the three edges from vertex 0
+  // (toward the camera, at depth 5 - R = 3.5) to the far face (at 5 + R / 3 = 5.5).
+  const double a = 1.5 / std::sqrt(3.0);
+  const ConvexShape t = test::regular_tetrahedron(a);
+  const Eigen::Matrix3d rot =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::Ones(), Eigen::Vector3d::UnitZ())
+          .toRotationMatrix();
+  const FragmentState f = test::shaped_fragment(t, {0.0, 0.0, -5.0}, rot);
+  FrameStyle style = square_style();
+  style.overlays.cuts = true;
+  const Image img = render({f}, square_camera(4.5), sky_scene(), style);
+  int cut_px = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) cut_px += img.at(x, y) == kCutColour;
+  }
+  // The section is a triangle of circumradius 2 sqrt(2) R / 3 * (1 / 2) (half way from the vertex
+  // to the far face) = 0.707 m at depth 4.5: perimeter 3 sqrt(3) 0.707 / 4.5 * 100 = 82 px, drawn
+  // 2 px wide.
+  EXPECT_GT(cut_px, 82);
+  EXPECT_LT(cut_px, 4 * 82);
+  // Without the overlay the cut is a hole: the eye sees into the piece where its front is gone,
+  // and back faces are culled, so the pixel on the view axis shows the sky.
+  const Image plain = render({f}, square_camera(4.5));
+  EXPECT_EQ(plain.at(100, 100), render({}, square_camera(4.5)).at(100, 100));
 }
 
 TEST(Frame, RightIsScreenRightAndUpIsScreenTop) {
@@ -408,6 +537,31 @@ TEST(FrameRecorder, KeepsTheChosenStepsOfEachRunAsTheyWere) {
   EXPECT_EQ(frames.frames("edge"), nullptr);
   evaluate(scene, "edge", opts);
   EXPECT_EQ(frames.strategies(), (std::vector<std::string>{"none", "edge"}));
+}
+
+TEST(FrameRecorder, KeepsItsOwnCopyOfAConvexPiecesShape) {
+  // A run's shapes die with its simulation, before the frames are drawn: the recorder's frame
+  // must not point at them. Two fragments share one shape; the frame shares one copy too.
+  auto shape = std::make_unique<ConvexShape>(test::regular_tetrahedron(0.5));
+  const ConvexShape* original = shape.get();
+  std::vector<FragmentState> frags{test::shaped_fragment(*shape, {0.0, 0.0, -5.0}),
+                                   test::shaped_fragment(*shape, {1.0, 0.0, -5.0})};
+  FrameRecorder frames({0});
+  RunInfo info;
+  info.strategy = "none";
+  info.fragment_count = 2;
+  frames.begin(info, snapshot(square_camera(), frags));
+  const Image before = render(frags);
+  shape.reset();
+  const RecordedFrame* kept = frames.frame("none", 0);
+  ASSERT_NE(kept, nullptr);
+  const ConvexShape* copy = kept->fragments[0].shape;
+  ASSERT_NE(copy, nullptr);
+  EXPECT_NE(copy, original);
+  EXPECT_EQ(kept->fragments[1].shape, copy);
+  EXPECT_EQ(copy->vertices_m, test::regular_tetrahedron(0.5).vertices_m);
+  FrameRenderer r(sky_scene(), square_style());
+  EXPECT_EQ(r.render(kept->view()).bytes(), before.bytes());
 }
 
 TEST(ContactSheet, DefaultStepsAndCellsAreTheFrames) {
