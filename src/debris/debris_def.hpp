@@ -25,7 +25,9 @@ struct DebrisDef {
   double gap = 0.02;    // each piece is shrunk by this share about its centre so none touch
   int pieces = 1000;    // voronoi: the number of cells
   // voronoi: in [0, 1). The seed points' density falls off as distance^(-3 cluster) from the
-  // blast point, so a cell's size grows like distance^cluster: 0 is uniform over the box.
+  // blast point, so a cell's size grows like distance^cluster (0: uniform over the box), outside a
+  // core of radius size_m / (2 pieces^(1/3)) about the blast where it is uniform, so cells near
+  // the blast stay of a simulable size.
   double cluster = 0.0;
   Eigen::Vector3d blast_offset_m = Eigen::Vector3d::Zero();  // from the object's centre
   // Not empty: the pieces are this file's meshes (.obj, .gltf, .glb) and pattern, size_m, splits,

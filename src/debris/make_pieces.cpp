@@ -57,10 +57,14 @@ class SeedPoints {
   std::mt19937_64 engine_;
 };
 
-// `n` points strictly inside the cube of half edge h about the origin. Each is drawn in the ball
-// about the blast point b that holds the cube, at distance R u^(1 / (3 (1 - cluster))) in a
-// uniform direction, and kept if inside the cube: the density of points is then proportional to
-// |x - b|^(-3 cluster) (uniform for cluster = 0), so cells shrink toward the blast.
+// `pieces` points strictly inside the cube of half edge h about the origin, drawn from a density
+// that is uniform within r_core of the blast point b and falls off as (r / r_core)^(-3 cluster)
+// beyond: cells shrink toward the blast, but no cell is smaller than the core's, where a pure power
+// law would put a cell of 1e-15 m^3 at b. r_core is half the mean spacing of uniform cells,
+// size / (2 pieces^(1/3)). A point is drawn in the ball about b that holds the cube (radius R, in a
+// uniform direction, at the distance whose share of the ball's mass is a uniform number) and kept
+// if inside the cube. With x = r / r_core and a = 1 - cluster the mass within x is x^3 / 3 for
+// x <= 1 and 1/3 + (x^(3a) - 1) / (3a) beyond, inverted in closed form; cluster = 0 is uniform.
 std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
   SeedPoints rng(def.seed);
   const double h = 0.5 * def.size_m;
@@ -70,7 +74,10 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
     const Eigen::Vector3d corner(c & 1 ? h : -h, c & 2 ? h : -h, c & 4 ? h : -h);
     r_max = std::max(r_max, (corner - b).norm());
   }
-  const double exponent = 1.0 / (3.0 * (1.0 - def.cluster));
+  const double r_core = 0.5 * def.size_m / std::cbrt(static_cast<double>(def.pieces));
+  const double a3 = 3.0 * (1.0 - def.cluster);
+  const double x_max = r_max / r_core;  // > 1: r_max is at least the half diagonal
+  const double mass_max = 1.0 / 3.0 + (std::pow(x_max, a3) - 1.0) / a3;
   std::vector<Eigen::Vector3d> out;
   out.reserve(static_cast<std::size_t>(def.pieces));
   // A blast far outside the object could make acceptance too rare to wait for.
@@ -85,7 +92,10 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
     do {
       dir = Eigen::Vector3d(2 * rng.uniform() - 1, 2 * rng.uniform() - 1, 2 * rng.uniform() - 1);
     } while (dir.squaredNorm() > 1.0 || dir.squaredNorm() < 1e-12);
-    const Eigen::Vector3d p = b + r_max * std::pow(rng.uniform(), exponent) * dir.normalized();
+    const double m = rng.uniform() * mass_max;
+    const double x =
+        m <= 1.0 / 3.0 ? std::cbrt(3.0 * m) : std::pow(1.0 + a3 * (m - 1.0 / 3.0), 1.0 / a3);
+    const Eigen::Vector3d p = b + x * r_core * dir.normalized();
     if ((p.array().abs() < h).all()) out.push_back(p);
   }
   return out;

@@ -124,8 +124,9 @@ std::vector<KeySpec> keys_before_strategies() {
                 {{"grid", DebrisPattern::kGrid}, {"voronoi", DebrisPattern::kVoronoi}}),
          integer("pieces", "", "voronoi: the number of cells", &D::pieces, 1, kMaxPieces),
          real("cluster", "",
-              "voronoi: in [0, 1); seed points' density falls off as distance^(-3 cluster) from "
-              "the blast centre, so cells are smaller near it (0: uniform)",
+              "voronoi: in [0, 1); outside a small core about the blast centre, seed points' "
+              "density falls off as distance^(-3 cluster), so cells are smaller near it (0: "
+              "uniform)",
               &D::cluster, settings::Range{0.0, 1.0, false, true}),
          text("mesh_file",
               "pieces from a mesh file (.obj, .gltf, .glb; one mesh per piece, each taken as its "

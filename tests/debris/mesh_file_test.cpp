@@ -182,3 +182,59 @@ TEST_F(MeshFile, EachBadInputIsOneLineNamingFileAndPiece) {
 
 }  // namespace
 }  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+std::string base64(const std::string& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t v = 0;
+    for (std::size_t k2 = 0; k2 < 3; ++k2) {
+      v = (v << 8) | (k2 < n ? static_cast<unsigned char>(bytes[i + k2]) : 0u);
+    }
+    for (std::size_t k2 = 0; k2 < 4; ++k2) {
+      out += k2 <= n ? k[(v >> (18 - 6 * k2)) & 63] : '=';
+    }
+  }
+  return out;
+}
+
+TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
+  // A 1 x 2 x 3 box about its origin, in a child node turned 90 degrees about z and moved 0.5 m
+  // along x, under a parent moved to (1, 2, 3) and scaled by 2. The piece: a 4 x 2 x 6 box (the
+  // turn swaps x and y, the scale doubles), volume 48, centred at (1, 2, 3) + 2 (0.5, 0, 0).
+  std::string bytes;
+  for (int c = 0; c < 8; ++c) {
+    const float v[3] = {c & 1 ? 0.5f : -0.5f, c & 2 ? 1.0f : -1.0f, c & 4 ? 1.5f : -1.5f};
+    bytes.append(reinterpret_cast<const char*>(v), sizeof v);
+  }
+  const double s = std::sqrt(0.5);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+      R"("nodes":[{"name":"parent","translation":[1,2,3],"scale":[2,2,2],"children":[1]},)"
+      R"({"name":"box","mesh":0,"translation":[0.5,0,0],"rotation":[0,0,)" +
+      std::to_string(s) + "," + std::to_string(s) +
+      R"(]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3",)"
+      R"("min":[-0.5,-1,-1.5],"max":[0.5,1,1.5]}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":96}],)"
+      R"("buffers":[{"byteLength":96,"uri":"data:application/octet-stream;base64,)" +
+      base64(bytes) + R"("}]})";
+  const std::vector<Piece> p = read_pieces(write("box.gltf", json), 1.0);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NEAR(p[0].shape->volume_m3, 48.0, 48.0 * 1e-6);
+  EXPECT_NEAR((p[0].centre_m - Eigen::Vector3d(2, 2, 3)).norm(), 0.0, 1e-6);
+  EXPECT_NEAR((p[0].half_extents_m - Eigen::Vector3d(2, 1, 3)).norm(), 0.0, 1e-5);
+
+  // A glTF file whose only node has no mesh has no piece.
+  const std::string empty =
+      write("empty.gltf", R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{}]})");
+  const std::string m = error_of(empty);
+  EXPECT_NE(m.find(empty + ": no mesh"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace fragsim
