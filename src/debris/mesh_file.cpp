@@ -8,7 +8,6 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <sstream>
 
 #include "debris/convex_hull.hpp"
