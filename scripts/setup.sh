@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 preset="${1:-release}"
 
 packages=(cmake g++ make pkg-config libode-dev libeigen3-dev libboost-program-options-dev
-          googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev)
+          googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev
+          voro++-dev libqhull-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev)
 scripts/install_packages.sh "${packages[@]}"
 
 cmake --preset "$preset" >/dev/null

@@ -11,6 +11,7 @@
 
 #include "cli/bench_command.hpp"
 #include "cli/command_line.hpp"
+#include "cli/fracture_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
 #include "cli/suite_command.hpp"
@@ -19,10 +20,10 @@
 #include "experiments/evaluation.hpp"
 #include "experiments/process_runner.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "metrics/trajectory_writer.hpp"
 #include "report/csv_export.hpp"
 #include "report/html_report.hpp"
-#include "io/input_error.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 
@@ -43,6 +44,7 @@ const char* kUsage =
     "  suite    every strategy on a fixed battery of scenes, seeds and camera modes: a verdict\n"
     "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
     "  bench    run time against error: step sizes, solvers, predictors, skips vs a reference\n"
+    "  fracture the pieces a scene's object breaks into, as a .glb or .obj file\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
 
 void add_output_options(po::options_description& own) {
@@ -211,6 +213,7 @@ int main(int argc, char** argv) {
     if (command == "suite") return cli::cmd_suite(args);
     if (command == "render") return cli::cmd_render(args);
     if (command == "bench") return cli::cmd_bench(args);
+    if (command == "fracture") return cli::cmd_fracture(args);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << kUsage;
       return 0;

@@ -1,14 +1,36 @@
 #include "report/results_table.hpp"
 
+#include <algorithm>
+#include <cstdio>
+
 #include "io/number_format.hpp"
 #include "report/html_escape.hpp"
 #include "report/text_table.hpp"
+#include "sim/explosion.hpp"
 #include "sim/world.hpp"
 
 namespace fragsim {
 namespace {
 
 using Cell = std::function<std::string(const Evaluation&)>;
+
+// Irregular pieces differ in size by orders of magnitude, which is what such a scene tests: the
+// header says how much. Equal cubes say nothing more than their count.
+std::string piece_sizes_text(const Scene& scene) {
+  const bool mesh = !scene.object.mesh_file.empty();
+  if (!mesh && scene.object.pattern == DebrisPattern::kGrid) return "";
+  std::vector<double> v;
+  for (const Piece& p : scene_pieces(scene)) v.push_back(piece_volume_m3(p));
+  if (v.empty()) return "";
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  const double median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  char text[160];
+  std::snprintf(text, sizeof text,
+                " (%s; piece volume smallest %.3g m^3, median %.3g m^3, largest %.3g m^3)",
+                mesh ? "from object.mesh_file" : "voronoi", v.front(), median, v.back());
+  return text;
+}
 
 Cell text_cell(std::string RunSummary::*field) {
   return [field](const Evaluation& e) { return e.summary.*field; };
@@ -238,9 +260,10 @@ std::vector<ResultsColumn> results_columns(double near_miss_m) {
 ResultsTable results_table(const Scene& scene, const std::vector<Evaluation>& runs) {
   ResultsTable t;
   t.scene_name = scene.name;
-  t.caption = std::to_string(scene.fragment_count()) + " fragments, " +
-              std::to_string(scene.step_count()) + " steps of " + fixed_text(scene.sim.dt_s, 5) +
-              " s, seed " + std::to_string(scene.sim.seed) + ", ODE " + World::ode_version();
+  t.caption = std::to_string(scene.fragment_count()) + " fragments" + piece_sizes_text(scene) +
+              ", " + std::to_string(scene.step_count()) + " steps of " +
+              fixed_text(scene.sim.dt_s, 5) + " s, seed " + std::to_string(scene.sim.seed) +
+              ", ODE " + World::ode_version();
   t.columns = results_columns(scene.metrics.near_miss_m);
   for (const Evaluation& e : runs) {
     std::vector<std::string> row;

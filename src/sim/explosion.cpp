@@ -1,7 +1,5 @@
 #include "sim/explosion.hpp"
 
-#include <cmath>
-
 #include "sim/camera_motion.hpp"
 #include "sim/random.hpp"
 #include "sim/sampled_camera.hpp"
@@ -49,17 +47,40 @@ Eigen::Vector3d object_centre(const Scene& scene) {
   return eye + obj.distance_m * (obj.centre_m - eye).normalized();
 }
 
+DebrisDef debris_def(const Scene& scene) {
+  const ObjectDef& obj = scene.object;
+  DebrisDef d;
+  d.pattern = obj.pattern;
+  d.size_m = obj.size_m;
+  d.splits = obj.splits;
+  d.gap = obj.gap;
+  d.pieces = obj.pieces;
+  d.cluster = obj.cluster;
+  d.blast_offset_m = scene.explosion.offset_m;
+  d.mesh_file = obj.mesh_file;
+  d.density_kgpm3 = obj.density_kgpm3;
+  d.seed = scene.sim.seed;
+  return d;
+}
+
+std::vector<Piece> scene_pieces(const Scene& scene) {
+  if (scene.object.mesh_pieces) return *scene.object.mesh_pieces;
+  return make_pieces(debris_def(scene));
+}
+
+int Scene::fragment_count() const {
+  if (object.mesh_pieces) return static_cast<int>(object.mesh_pieces->size());
+  if (object.mesh_file.empty() && object.pattern == DebrisPattern::kVoronoi) return object.pieces;
+  return object.splits * object.splits * object.splits;
+}
+
 std::vector<FragmentSpawn> explode(const Scene& scene) {
   return explode(scene, *make_camera_motion(scene));
 }
 
 std::vector<FragmentSpawn> explode(const Scene& scene, const CameraMotion& camera) {
-  const ObjectDef& obj = scene.object;
   const ExplosionDef& ex = scene.explosion;
-  const int n = obj.splits;
-  const double cell_m = obj.size_m / n;
-  const double half_m = 0.5 * cell_m * (1.0 - obj.gap);
-  const double mass_kg = obj.density_kgpm3 * std::pow(2.0 * half_m, 3);
+  const std::vector<Piece> pieces = scene_pieces(scene);
   const Eigen::Vector3d centre_m = object_centre(scene);
   const Eigen::Vector3d blast_m = centre_m + ex.offset_m;
   const Eigen::Vector3d aim_mps =
@@ -67,27 +88,22 @@ std::vector<FragmentSpawn> explode(const Scene& scene, const CameraMotion& camer
 
   Random rng(scene.sim.seed);
   std::vector<FragmentSpawn> out;
-  out.reserve(static_cast<std::size_t>(n) * n * n);
-  for (int iz = 0; iz < n; ++iz) {
-    for (int iy = 0; iy < n; ++iy) {
-      for (int ix = 0; ix < n; ++ix) {
-        FragmentSpawn f;
-        const Eigen::Vector3d local((ix + 0.5) * cell_m - 0.5 * obj.size_m,
-                                    (iy + 0.5) * cell_m - 0.5 * obj.size_m,
-                                    (iz + 0.5) * cell_m - 0.5 * obj.size_m);
-        f.position_m = centre_m + local;
-        f.half_extents_m = Eigen::Vector3d::Constant(half_m);
-        f.mass_kg = mass_kg;
-        Eigen::Vector3d radial = f.position_m - blast_m;
-        // A fragment at the blast centre itself gets a random direction.
-        radial = radial.norm() > 1e-12 ? radial.normalized() : unit_ball(rng).normalized();
-        const double scale = 1.0 + ex.jitter * rng.uniform(-1.0, 1.0);
-        f.velocity_mps =
-            scale * (ex.speed_mps * radial + aim_mps) + ex.jitter * ex.speed_mps * unit_ball(rng);
-        f.angular_velocity_radps = ex.spin_radps * unit_ball(rng);
-        out.push_back(f);
-      }
-    }
+  out.reserve(pieces.size());
+  for (const Piece& piece : pieces) {
+    FragmentSpawn f;
+    f.position_m = centre_m + piece.centre_m;
+    f.half_extents_m = piece.half_extents_m;
+    f.mass_kg = piece.mass_kg;
+    f.rotation = piece.rotation;
+    f.shape = piece.shape;
+    Eigen::Vector3d radial = f.position_m - blast_m;
+    // A fragment at the blast centre itself gets a random direction.
+    radial = radial.norm() > 1e-12 ? radial.normalized() : unit_ball(rng).normalized();
+    const double scale = 1.0 + ex.jitter * rng.uniform(-1.0, 1.0);
+    f.velocity_mps =
+        scale * (ex.speed_mps * radial + aim_mps) + ex.jitter * ex.speed_mps * unit_ball(rng);
+    f.angular_velocity_radps = ex.spin_radps * unit_ball(rng);
+    out.push_back(f);
   }
   return out;
 }

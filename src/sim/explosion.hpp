@@ -1,9 +1,11 @@
 #pragma once
-// Breaks the object into splits^3 boxes and gives each the velocity the blast leaves it with.
+// Breaks the object into its pieces (debris/debris_def.hpp) and gives each the velocity the blast
+// leaves it with.
 
 #include <memory>
 #include <vector>
 
+#include "debris/debris_def.hpp"
 #include "geometry/fragment_state.hpp"
 #include "sim/scene.hpp"
 
@@ -26,8 +28,16 @@ struct FragmentSpawn {
 // centre_m.
 Eigen::Vector3d object_centre(const Scene& scene);
 
-// Deterministic for a given scene (seeded by scene.sim.seed). Fragments are ordered x fastest,
-// then y, then z, so fragment i is the same piece of the object in every run of the scene.
+// What the scene's object breaks into: its object section and the blast's offset, seeded by
+// simulation.seed.
+DebrisDef debris_def(const Scene& scene);
+// The pieces, relative to the object's centre: the mesh file's as loaded with the scene, else
+// make_pieces(debris_def(scene)).
+std::vector<Piece> scene_pieces(const Scene& scene);
+
+// Deterministic for a given scene (seeded by scene.sim.seed). Fragments are in the pieces' order
+// (grid: x fastest, then y, then z), so fragment i is the same piece of the object in every run of
+// the scene; each flies from its centre of mass.
 // An aimed blast (explosion.toward_camera_mps > 0) is aimed at `camera`; the first form makes the
 // scene's own camera motion.
 std::vector<FragmentSpawn> explode(const Scene& scene);

@@ -4,9 +4,11 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "debris/debris_def.hpp"
 #include "geometry/camera_pose.hpp"
 #include "strategies/strategy_settings.hpp"
 
@@ -62,6 +64,17 @@ struct ObjectDef {
   // When > 0, the object is moved along the line from the camera's first waypoint through
   // centre_m to this distance from the eye (for sweeps over the explosion's distance).
   double distance_m = 0.0;
+  // What the cube breaks into (debris/debris_def.hpp): the grid of splits^3 cubes, or `pieces`
+  // Voronoi cells, `cluster` making them smaller toward the blast; or, with mesh_file set, the
+  // pieces of that file (pattern, splits, pieces, cluster and gap then do not apply). A relative
+  // mesh_file in a scene file is taken from the scene file's folder and held absolute.
+  DebrisPattern pattern = DebrisPattern::kGrid;
+  int pieces = 1000;
+  double cluster = 0.0;
+  std::string mesh_file;
+  // The pieces read from mesh_file when the scene is loaded, so a bad file fails before anything
+  // runs. Not a scene key.
+  std::shared_ptr<const std::vector<Piece>> mesh_pieces;
 };
 
 enum class ExplosionAim { kFuture, kPresent };
@@ -144,7 +157,7 @@ struct Scene : StrategySettings {
   CameraDef camera;
   MetricsDef metrics;
 
-  int fragment_count() const { return object.splits * object.splits * object.splits; }
+  int fragment_count() const;
   int step_count() const;
 };
 

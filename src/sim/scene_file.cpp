@@ -1,5 +1,6 @@
 #include "sim/scene_file.hpp"
 
+#include "debris/mesh_file.hpp"
 #include "io/number_format.hpp"
 #include "settings/key.hpp"
 #include "sim/camera_track_file.hpp"
@@ -9,6 +10,7 @@
 #include <boost/program_options/value_semantic.hpp>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -111,10 +113,26 @@ std::vector<KeySpec> keys_before_strategies() {
               "if > 0, the cube is moved along the line from the camera's first waypoint through "
               "centre_m to this distance from it (0: centre_m as is)",
               &D::distance_m, closed(0, 1e6)),
-         integer("splits", "", "pieces per axis; splits^3 fragments", &D::splits, 1, 64),
+         integer("splits", "", "grid: pieces per axis; splits^3 fragments", &D::splits, 1, 64),
          real("density_kgpm3", "kg/m^3", "", &D::density_kgpm3, open_closed(0, 1e5)),
          real("gap", "", "share by which each fragment is shrunk, so none touch at t = 0", &D::gap,
-              closed(0, 0.5))});
+              closed(0, 0.5)),
+         choice("pattern",
+                "what the cube breaks into: splits^3 equal cubes, or `pieces` Voronoi cells of "
+                "the cube from seeded points",
+                &D::pattern,
+                {{"grid", DebrisPattern::kGrid}, {"voronoi", DebrisPattern::kVoronoi}}),
+         integer("pieces", "", "voronoi: the number of cells", &D::pieces, 1, kMaxPieces),
+         real("cluster", "",
+              "voronoi: in [0, 1); outside a small core about the blast centre, seed points' "
+              "density falls off as distance^(-3 cluster), so cells are smaller near it (0: "
+              "uniform)",
+              &D::cluster, settings::Range{0.0, 1.0, false, true}),
+         text("mesh_file",
+              "pieces from a mesh file (.obj, .gltf, .glb; one mesh per piece, each taken as its "
+              "convex hull, the file's origin at centre_m) instead of pattern; a relative path is "
+              "taken from the scene file's folder",
+              &D::mesh_file)});
   }
   {
     using D = ExplosionDef;
@@ -333,6 +351,14 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
       if (n > 0) throw SceneError(at + ": " + o.string_key + " is set more than once");
       apply(keys, scene, o.string_key, o.value.empty() ? std::string() : o.value.front(), at);
     }
+    // A mesh file beside its scene file is found from anywhere; held absolute, the scene's
+    // config.ini (and a worker's copy of the scene) still names the same file.
+    std::string& mesh = scene.object.mesh_file;
+    if (!mesh.empty() && std::filesystem::path(mesh).is_relative()) {
+      mesh = std::filesystem::absolute(std::filesystem::path(origin).parent_path() / mesh)
+                 .lexically_normal()
+                 .string();
+    }
   }
   for (const SceneOverride& o : overrides) {
     apply(keys, scene, o.key, o.value, "--" + o.key);
@@ -344,6 +370,14 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
           scene.camera.track_file, scene.camera.track_strategy, scene.camera.max_speed_mps);
     } catch (const InputError& e) {
       throw SceneError(std::string(e.what()) + " (camera.track_file)");
+    }
+  }
+  if (!scene.object.mesh_file.empty()) {
+    try {
+      scene.object.mesh_pieces = std::make_shared<const std::vector<Piece>>(
+          read_pieces(scene.object.mesh_file, scene.object.density_kgpm3));
+    } catch (const InputError& e) {
+      throw SceneError(std::string(e.what()) + " (object.mesh_file)");
     }
   }
   return scene;

@@ -1,0 +1,55 @@
+#pragma once
+// A convex piece from a cloud of points: the hull (Qhull), then the volume, centre of mass and
+// inertia of the solid hull of uniform density, in the shape's body frame.
+
+#include <Eigen/Core>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "geometry/convex_shape.hpp"
+
+namespace fragsim {
+
+// Points whose hull has no volume (fewer than four, all on a plane or a line, or a hull smaller
+// than kMinHullVolume_m3), or a non-finite point. The message says which, without a file name:
+// the caller knows what the points are.
+class DegenerateHull : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Smaller than a 0.1 mm cube: below what ODE can step as a body, and the size at which Qhull's
+// rounding of a flat cloud would otherwise pass for a piece.
+constexpr double kMinHullVolume_m3 = 1e-12;
+
+struct HullPiece {
+  std::shared_ptr<const ConvexShape> shape;
+  Eigen::Vector3d centre_m;  // the centre of mass in the points' frame
+};
+
+// The hull of `points_m`, its faces merged where coplanar, with the vertices being input points
+// exactly (moved to the centre of mass). Throws DegenerateHull.
+HullPiece convex_hull(const std::vector<Eigen::Vector3d>& points_m);
+
+// The solid's volume, centre of mass and second moments from its faces (counter-clockwise from
+// outside), by tetrahedra from a point inside (Tonon 2004, "Explicit exact formulas for the 3-D
+// tetrahedron inertia tensor in terms of its vertex coordinates").
+struct MassProperties {
+  double volume_m3 = 0.0;
+  Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia_per_kg_m2 = Eigen::Matrix3d::Zero();  // about centre_m
+};
+MassProperties polyhedron_mass(const std::vector<Eigen::Vector3d>& vertices_m,
+                               const std::vector<std::vector<int>>& faces);
+
+// The shape of the polyhedron (vertices and counter-clockwise faces) in the frame of its centre of
+// mass, every field of ConvexShape filled; the centre in the vertices' frame through `centre_m`.
+std::shared_ptr<ConvexShape> shape_of_polyhedron(const std::vector<Eigen::Vector3d>& vertices_m,
+                                                 const std::vector<std::vector<int>>& faces,
+                                                 Eigen::Vector3d* centre_m);
+
+// The same shape scaled by `s` about its centre of mass (the gap between pieces).
+std::shared_ptr<ConvexShape> scaled_shape(const ConvexShape& shape, double s);
+
+}  // namespace fragsim

@@ -1,0 +1,32 @@
+#pragma once
+// Pieces in mesh files: read from a file fractured elsewhere (one mesh per piece: an OBJ object or
+// group, a glTF node with a mesh), and written, so `fragsim fracture` output opens in any viewer
+// and reads back as the same pieces.
+
+#include <string>
+#include <vector>
+
+#include "debris/piece.hpp"
+
+namespace fragsim {
+
+// The pieces of an .obj, .gltf or .glb file (by its extension), in the file's frame: each the
+// convex hull of its mesh's vertices (glTF: with the node's transform and its parents' applied),
+// of uniform density. Throws InputError, one line naming the file and, where it is one piece's
+// fault, the piece: not found or unreadable, not parsable, no mesh, more than kMaxPieces pieces,
+// a non-finite vertex, a flat or zero-volume piece (below kMinHullVolume_m3).
+std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3);
+
+// Each piece's hull (a grid piece's box) in the object's frame, one OBJ object `piece_<n>` per
+// piece with 17 significant digits, so the file reads back to the last bit of every vertex.
+std::string pieces_obj(const std::vector<Piece>& pieces);
+// The same as binary glTF: one node per piece, translated to its centre of mass, whose mesh holds
+// the vertices relative to that centre as 32-bit floats (glTF has no other type for positions).
+std::string pieces_glb(const std::vector<Piece>& pieces);
+
+// One of the two, chosen by the extension (.obj, .glb), written atomically (io/atomic_file.hpp).
+// Throws InputError naming the path for another extension, std::runtime_error if it cannot be
+// written.
+void write_pieces(const std::vector<Piece>& pieces, const std::string& path);
+
+}  // namespace fragsim

@@ -1,0 +1,240 @@
+// Pieces from and to mesh files: closed forms for a cube and a tetrahedron read from OBJ, round
+// trips through OBJ and binary glTF, and one line naming the file and piece for each bad input.
+
+#include "debris/mesh_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "debris/debris_def.hpp"
+#include "io/input_error.hpp"
+
+namespace fragsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeshFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("fragsim_mesh_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+  // The message of the InputError reading `path` throws; empty if none.
+  static std::string error_of(const std::string& path) {
+    try {
+      read_pieces(path, 600.0);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  fs::path dir_;
+};
+
+// A unit cube centred on (1, 2, 3), its faces as triangles, as Blender exports it.
+const char* kCubeObj =
+    "o Cube\n"
+    "v 0.5 1.5 2.5\nv 1.5 1.5 2.5\nv 0.5 2.5 2.5\nv 1.5 2.5 2.5\n"
+    "v 0.5 1.5 3.5\nv 1.5 1.5 3.5\nv 0.5 2.5 3.5\nv 1.5 2.5 3.5\n"
+    "f 1 3 4\nf 1 4 2\nf 5 6 8\nf 5 8 7\nf 1 2 6\nf 1 6 5\n"
+    "f 3 7 8\nf 3 8 4\nf 1 5 7\nf 1 7 3\nf 2 4 8\nf 2 8 6\n";
+
+TEST_F(MeshFile, UnitCubeHasTheClosedFormMassAndInertia) {
+  const std::vector<Piece> p = read_pieces(write("cube.obj", kCubeObj), 750.0);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NEAR(p[0].mass_kg, 750.0, 750.0 * 1e-12);
+  EXPECT_NEAR((p[0].centre_m - Eigen::Vector3d(1, 2, 3)).norm(), 0.0, 1e-12);
+  const Eigen::Matrix3d inertia_kgm2 = p[0].mass_kg * p[0].shape->inertia_per_kg_m2;
+  EXPECT_NEAR((inertia_kgm2 - Eigen::Matrix3d::Identity() * 750.0 / 6.0).norm(), 0.0,
+              750.0 * 1e-12);
+  EXPECT_EQ(p[0].shape->faces.size(), 6u);  // coplanar triangles merged
+  EXPECT_NEAR((p[0].half_extents_m - Eigen::Vector3d::Constant(0.5)).norm(), 0.0, 1e-12);
+}
+
+TEST_F(MeshFile, TetrahedronHasTheClosedFormVolumeAndCentroid) {
+  // Two objects: the cube, then the corner tetrahedron of edges 1, 2, 3 at (-4, 0, 0).
+  const std::string tet =
+      "o Tet\nv -4 0 0\nv -3 0 0\nv -4 2 0\nv -4 0 3\nf 9 11 10\nf 9 10 12\nf 9 12 11\nf 10 11 "
+      "12\n";
+  const std::vector<Piece> p = read_pieces(write("two.obj", std::string(kCubeObj) + tet), 1.0);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_NEAR(p[1].shape->volume_m3, 1.0 * 2.0 * 3.0 / 6.0, 1e-14);
+  EXPECT_NEAR((p[1].centre_m - Eigen::Vector3d(-4 + 0.25, 0.5, 0.75)).norm(), 0.0, 1e-14);
+}
+
+// Every vertex of `a` (in the object's frame) has one of `b` within tol, and the counts agree.
+void expect_same_piece(const Piece& a, const Piece& b, double tol) {
+  ASSERT_NE(b.shape, nullptr);
+  ASSERT_EQ(a.shape->vertices_m.size(), b.shape->vertices_m.size());
+  EXPECT_NEAR((a.centre_m - b.centre_m).norm(), 0.0, tol);
+  for (const auto& va : a.shape->vertices_m) {
+    double best_m = INFINITY;
+    for (const auto& vb : b.shape->vertices_m) {
+      best_m = std::min(best_m, (a.centre_m + va - b.centre_m - vb).norm());
+    }
+    EXPECT_LE(best_m, tol);
+  }
+}
+
+DebrisDef some_cells() {
+  DebrisDef d;
+  d.pattern = DebrisPattern::kVoronoi;
+  d.pieces = 60;
+  d.cluster = 0.4;
+  d.blast_offset_m = Eigen::Vector3d(0.2, -0.1, 0.3);
+  return d;
+}
+
+TEST_F(MeshFile, ObjRoundTripIsExactTo1e12) {
+  const DebrisDef d = some_cells();
+  const std::vector<Piece> a = make_pieces(d);
+  const std::string path = (dir_ / "cells.obj").string();
+  write_pieces(a, path);
+  const std::vector<Piece> b = read_pieces(path, d.density_kgpm3);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    expect_same_piece(a[i], b[i], 1e-12);
+    EXPECT_NEAR(b[i].mass_kg / a[i].mass_kg, 1.0, 1e-12);
+  }
+}
+
+TEST_F(MeshFile, GlbRoundTripIsExactToFloatPrecision) {
+  const DebrisDef d = some_cells();
+  const std::vector<Piece> a = make_pieces(d);
+  const std::string path = (dir_ / "cells.glb").string();
+  write_pieces(a, path);
+  const std::vector<Piece> b = read_pieces(path, d.density_kgpm3);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    // 32-bit positions about the centre, which the node holds in double: 1e-6 of the piece's size.
+    expect_same_piece(a[i], b[i], 1e-6 * a[i].shape->radius_m);
+    EXPECT_NEAR(b[i].mass_kg / a[i].mass_kg, 1.0, 1e-6);
+  }
+}
+
+TEST_F(MeshFile, GridPiecesWriteAsBoxes) {
+  DebrisDef d;
+  d.splits = 2;
+  const std::vector<Piece> a = make_pieces(d);
+  const std::string path = (dir_ / "grid.obj").string();
+  write_pieces(a, path);
+  const std::vector<Piece> b = read_pieces(path, d.density_kgpm3);
+  ASSERT_EQ(b.size(), 8u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_NEAR((a[i].centre_m - b[i].centre_m).norm(), 0.0, 1e-12);
+    EXPECT_NEAR(b[i].mass_kg / a[i].mass_kg, 1.0, 1e-12);
+    EXPECT_NEAR((b[i].half_extents_m - a[i].half_extents_m).norm(), 0.0, 1e-12);
+  }
+}
+
+TEST_F(MeshFile, EachBadInputIsOneLineNamingFileAndPiece) {
+  auto expect_line = [](const std::string& message, const std::string& path,
+                        const std::string& part) {
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  };
+  const std::string missing = (dir_ / "missing.obj").string();
+  expect_line(error_of(missing), missing, "missing.obj");
+
+  const std::string no_mesh = write("points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
+  expect_line(error_of(no_mesh), no_mesh, "no mesh");
+
+  const std::string flat =
+      write("flat.obj",
+            std::string(kCubeObj) + "o Sheet\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 9 10 11 12\n");
+  expect_line(error_of(flat), flat, "piece 2 ('Sheet'): the points are flat");
+
+  const std::string tiny =
+      write("tiny.obj", "o Speck\nv 0 0 0\nv 1e-5 0 0\nv 0 1e-5 0\nv 0 0 1e-5\nf 1 2 3\nf 1 2 4\n");
+  expect_line(error_of(tiny), tiny, "piece 1 ('Speck'): hull volume");
+
+  const std::string inf =
+      write("inf.obj", "o Far\nv 0 0 0\nv 1e999 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+  expect_line(error_of(inf), inf, "piece 1 ('Far'): a vertex is not finite");
+
+  std::string many;
+  for (int i = 0; i <= kMaxPieces; ++i) {
+    many += "o p\nv " + std::to_string(i) + " 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\nf -4 -3 -2 -1\n";
+  }
+  const std::string too_many = write("many.obj", many);
+  expect_line(error_of(too_many), too_many, "more than 20000 pieces");
+
+  const std::string stl = write("piece.stl", "solid\n");
+  expect_line(error_of(stl), stl, "unknown mesh format");
+
+  const std::string junk = write("junk.glb", "not a glb at all");
+  expect_line(error_of(junk), junk, "not a readable glTF file");
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+std::string base64(const std::string& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t v = 0;
+    for (std::size_t k2 = 0; k2 < 3; ++k2) {
+      v = (v << 8) | (k2 < n ? static_cast<unsigned char>(bytes[i + k2]) : 0u);
+    }
+    for (std::size_t k2 = 0; k2 < 4; ++k2) {
+      out += k2 <= n ? k[(v >> (18 - 6 * k2)) & 63] : '=';
+    }
+  }
+  return out;
+}
+
+TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
+  // A 1 x 2 x 3 box about its origin, in a child node turned 90 degrees about z and moved 0.5 m
+  // along x, under a parent moved to (1, 2, 3) and scaled by 2. The piece: a 4 x 2 x 6 box (the
+  // turn swaps x and y, the scale doubles), volume 48, centred at (1, 2, 3) + 2 (0.5, 0, 0).
+  std::string bytes;
+  for (int c = 0; c < 8; ++c) {
+    const float v[3] = {c & 1 ? 0.5f : -0.5f, c & 2 ? 1.0f : -1.0f, c & 4 ? 1.5f : -1.5f};
+    bytes.append(reinterpret_cast<const char*>(v), sizeof v);
+  }
+  const double s = std::sqrt(0.5);
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+      R"("nodes":[{"name":"parent","translation":[1,2,3],"scale":[2,2,2],"children":[1]},)"
+      R"({"name":"box","mesh":0,"translation":[0.5,0,0],"rotation":[0,0,)" +
+      std::to_string(s) + "," + std::to_string(s) +
+      R"(]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":8,"type":"VEC3",)"
+      R"("min":[-0.5,-1,-1.5],"max":[0.5,1,1.5]}],)"
+      R"("bufferViews":[{"buffer":0,"byteLength":96}],)"
+      R"("buffers":[{"byteLength":96,"uri":"data:application/octet-stream;base64,)" +
+      base64(bytes) + R"("}]})";
+  const std::vector<Piece> p = read_pieces(write("box.gltf", json), 1.0);
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_NEAR(p[0].shape->volume_m3, 48.0, 48.0 * 1e-6);
+  EXPECT_NEAR((p[0].centre_m - Eigen::Vector3d(2, 2, 3)).norm(), 0.0, 1e-6);
+  EXPECT_NEAR((p[0].half_extents_m - Eigen::Vector3d(2, 1, 3)).norm(), 0.0, 1e-5);
+
+  // A glTF file whose only node has no mesh has no piece.
+  const std::string empty =
+      write("empty.gltf", R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],"nodes":[{}]})");
+  const std::string m = error_of(empty);
+  EXPECT_NE(m.find(empty + ": no mesh"), std::string::npos) << m;
+}
+
+}  // namespace
+}  // namespace fragsim
