@@ -156,5 +156,22 @@ TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   EXPECT_EQ(fnv1a(csv), 0x50a3f6ec292999a9ull) << csv;
 }
 
+// The shipped Voronoi scene (front.ini's set-up, 1,000 cells): its summary pinned the same way,
+// and the verdict it supports checked in numbers: edge-min keeps every piece off the lens and
+// the camera body while `none` lets them through (README, "Debris as a fracture tool makes it").
+TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/voronoi.ini");
+  const std::vector<std::string> all{"none",       "wall", "deflect-all",
+                                     "near-plane", "edge", "edge-min"};
+  const std::vector<Evaluation> runs = compare(scene, all, true, nullptr, 2);
+  EXPECT_GT(runs.front().summary.near_fragments, 0);
+  EXPECT_GT(runs.front().summary.camera_hit_fragments, 0);
+  EXPECT_EQ(runs.back().summary.strategy, "edge-min");
+  EXPECT_EQ(runs.back().summary.near_fragments, 0);
+  EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
+  const std::string csv = summary_csv(scene, runs);
+  EXPECT_EQ(fnv1a(csv), 0xd3e597a857a49a5cull) << csv;
+}
+
 }  // namespace
 }  // namespace fragsim
