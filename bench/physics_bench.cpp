@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "debris/debris_def.hpp"
 #include "sim/camera_path.hpp"
 #include "sim/explosion.hpp"
 #include "sim/scene_file.hpp"
@@ -112,10 +113,25 @@ BENCHMARK_CAPTURE(BM_PhysicsDefaultScene, both,
 // `flight`: no ground, 60 steps from t = 0. `ground`: 180 steps untimed (3 s: every fragment has
 // landed and, with the exact stepper, come to rest), then 60 timed. `ground_collisions`: the same
 // with fragment collisions on (QuickStep, 20 iterations): the grid falls in columns that touch.
-enum class Piece { kBox, kConvex };
+// `voronoi`: the cells of a 1 m cube cut into 1,000 by the debris module (object.pattern =
+// voronoi: 1 litre on average, as the boxes, but from a few tenths to a few litres), each placed
+// where the grid puts a fragment and thrown the same way.
+enum class Piece { kBox, kConvex, kVoronoi };
 enum class Phase { kFlight, kGround, kGroundCollisions };
 
 constexpr int kShapesCount = 1000;
+
+const std::vector<fragsim::Piece>& voronoi_cells() {
+  static const std::vector<fragsim::Piece> cells = [] {
+    fragsim::DebrisDef def;
+    def.pattern = fragsim::DebrisPattern::kVoronoi;
+    def.size_m = 1.0;
+    def.pieces = kShapesCount;
+    def.density_kgpm3 = 600.0;
+    return fragsim::make_pieces(def);
+  }();
+  return cells;
+}
 
 std::vector<fragsim::FragmentSpawn> shapes_spawns(Piece piece) {
   std::mt19937_64 rng(14);
@@ -131,7 +147,12 @@ std::vector<fragsim::FragmentSpawn> shapes_spawns(Piece piece) {
     s.angular_velocity_radps = 10.0 * Eigen::Vector3d(u(rng), u(rng), u(rng));
     // Drawn for both kinds, so both throw every fragment the same way.
     fragsim::ConvexShape hull = fragsim::test::random_hull(rng, points(rng), 0.062);
-    if (piece == Piece::kConvex) {
+    if (piece == Piece::kVoronoi) {
+      const fragsim::Piece& cell = voronoi_cells()[static_cast<std::size_t>(i)];
+      s.half_extents_m = cell.shape->half_extents_m;
+      s.mass_kg = cell.mass_kg;
+      s.shape = cell.shape;
+    } else if (piece == Piece::kConvex) {
       s.half_extents_m = hull.half_extents_m;
       s.mass_kg = kDensity_kgpm3 * hull.volume_m3;
       s.shape = std::make_shared<const fragsim::ConvexShape>(std::move(hull));
@@ -178,6 +199,9 @@ PHYSICS_SHAPES(convex_flight, Piece::kConvex, Phase::kFlight);
 PHYSICS_SHAPES(boxes_ground, Piece::kBox, Phase::kGround);
 PHYSICS_SHAPES(convex_ground, Piece::kConvex, Phase::kGround);
 PHYSICS_SHAPES(boxes_ground_collisions, Piece::kBox, Phase::kGroundCollisions);
+PHYSICS_SHAPES(voronoi_flight, Piece::kVoronoi, Phase::kFlight);
+PHYSICS_SHAPES(voronoi_ground, Piece::kVoronoi, Phase::kGround);
+PHYSICS_SHAPES(voronoi_ground_collisions, Piece::kVoronoi, Phase::kGroundCollisions);
 PHYSICS_SHAPES(convex_ground_collisions, Piece::kConvex, Phase::kGroundCollisions);
 
 }  // namespace
