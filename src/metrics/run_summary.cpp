@@ -43,7 +43,6 @@ void set_cell(RunSummary& s, const SummaryField& c, const std::string& text) {
 
 }  // namespace
 
-
 const std::vector<SummaryField>& summary_field_table() {
   static const std::vector<SummaryField> cols{
       {"scene", &RunSummary::scene},

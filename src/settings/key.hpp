@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/number_format.hpp"
 #include "io/input_error.hpp"
+#include "io/number_format.hpp"
 #include "settings/value_text.hpp"
 
 namespace fragsim::settings {
