@@ -290,6 +290,30 @@ bool ray_meets_box(const CameraPose& cam, const FragmentState& f, double ndc_x, 
   return lo <= hi;
 }
 
+// The one fragment of `frags` on a 64-pixel-wide grid against `ray` (the reference through each
+// pixel centre): the pixels the reference covers; each pixel where the metric disagrees adds one
+// to `mismatches`.
+template <class Ray>
+int against_rays(const CameraPose& cam, const std::vector<FragmentState>& frags, Ray ray,
+                 int& mismatches) {
+  OcclusionMetric m(grid(64));
+  m.begin(run_info(1, 1), snapshot(0, cam, frags));
+  m.observe(snapshot(1, cam, frags));
+  const int w = m.width_px();
+  const int h = m.height_px();
+  int covered_px = 0;
+  for (int row = 0; row < h; ++row) {
+    for (int col = 0; col < w; ++col) {
+      const double ndc_x = (col + 0.5) / w * 2.0 - 1.0;
+      const double ndc_y = 1.0 - (row + 0.5) / h * 2.0;
+      const bool want = ray(cam, frags[0], ndc_x, ndc_y);
+      covered_px += want ? 1 : 0;
+      if (want != (m.coverage()[row * w + col] != 0)) ++mismatches;
+    }
+  }
+  return covered_px;
+}
+
 TEST(OcclusionMetric, MatchesRayCastingReference) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> near_m(0.05, 1.05);
@@ -313,20 +337,7 @@ TEST(OcclusionMetric, MatchesRayCastingReference) {
     const std::vector<FragmentState> frags{box(centre, half, draw_rotation(rng))};
     if (local.z() - half.norm() < cam.near_m) ++clipped;
 
-    OcclusionMetric m(grid(64));
-    m.begin(run_info(1, 1), snapshot(0, cam, frags));
-    m.observe(snapshot(1, cam, frags));
-    const int w = m.width_px();
-    const int h = m.height_px();
-    for (int row = 0; row < h; ++row) {
-      for (int col = 0; col < w; ++col) {
-        const double ndc_x = (col + 0.5) / w * 2.0 - 1.0;
-        const double ndc_y = 1.0 - (row + 0.5) / h * 2.0;
-        const bool want = ray_meets_box(cam, frags[0], ndc_x, ndc_y);
-        covered_px += want ? 1 : 0;
-        if (want != (m.coverage()[row * w + col] != 0)) ++mismatches;
-      }
-    }
+    covered_px += against_rays(cam, frags, ray_meets_box, mismatches);
     ++boxes;
   }
   EXPECT_GT(clipped, 30);             // the sample does exercise the near-plane clip
@@ -389,20 +400,7 @@ TEST(OcclusionMetric, HullsMatchRayCastingReference) {
     const std::vector<FragmentState> frags{
         test::shaped_fragment(shape, centre, draw_rotation(rng))};
     if (local.z() - shape.radius_m < cam.near_m) ++clipped;
-    OcclusionMetric m(grid(64));
-    m.begin(run_info(1, 1), snapshot(0, cam, frags));
-    m.observe(snapshot(1, cam, frags));
-    const int w = m.width_px();
-    const int h = m.height_px();
-    for (int row = 0; row < h; ++row) {
-      for (int col = 0; col < w; ++col) {
-        const double ndc_x = (col + 0.5) / w * 2.0 - 1.0;
-        const double ndc_y = 1.0 - (row + 0.5) / h * 2.0;
-        const bool want = ray_meets_hull(cam, frags[0], ndc_x, ndc_y);
-        covered_px += want ? 1 : 0;
-        if (want != (m.coverage()[row * w + col] != 0)) ++mismatches;
-      }
-    }
+    covered_px += against_rays(cam, frags, ray_meets_hull, mismatches);
   }
   EXPECT_GT(clipped, 20);
   EXPECT_GT(covered_px, 20 * 150);
