@@ -326,6 +326,16 @@ po::options_description options_of(const std::vector<KeySpec>& keys) {
   return d;
 }
 
+// The files a scene names, taken from `base` when relative (the scene file's folder, or the
+// current folder when empty).
+void make_paths_absolute(Scene& scene, const std::filesystem::path& base) {
+  for (std::string* path : {&scene.object.mesh_file, &scene.camera.track_file}) {
+    if (!path->empty() && std::filesystem::path(*path).is_relative()) {
+      *path = std::filesystem::absolute(base / *path).lexically_normal().string();
+    }
+  }
+}
+
 Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description& options,
                  const StrategyTable& table, const std::string& text, const std::string& origin,
                  const std::vector<SceneOverride>& overrides) {
@@ -351,18 +361,16 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
       if (n > 0) throw SceneError(at + ": " + o.string_key + " is set more than once");
       apply(keys, scene, o.string_key, o.value.empty() ? std::string() : o.value.front(), at);
     }
-    // A mesh file beside its scene file is found from anywhere; held absolute, the scene's
-    // config.ini (and a worker's copy of the scene) still names the same file.
-    std::string& mesh = scene.object.mesh_file;
-    if (!mesh.empty() && std::filesystem::path(mesh).is_relative()) {
-      mesh = std::filesystem::absolute(std::filesystem::path(origin).parent_path() / mesh)
-                 .lexically_normal()
-                 .string();
-    }
+    // A file a scene names (a mesh, a camera track) beside the scene file is found from
+    // anywhere; held absolute, the scene's config.ini (and a worker's copy of the scene) still
+    // names the same file. On the command line a relative path is the shell's: the current
+    // folder's, made absolute below for the same reason.
+    make_paths_absolute(scene, std::filesystem::path(origin).parent_path());
   }
   for (const SceneOverride& o : overrides) {
     apply(keys, scene, o.key, o.value, "--" + o.key);
   }
+  make_paths_absolute(scene, std::filesystem::path());
   validate_scene(scene, table);
   if (scene.camera.mode == CameraMode::kTrack) {
     try {

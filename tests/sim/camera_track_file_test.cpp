@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -103,6 +106,27 @@ TEST(CameraTrackFile, SceneNamesABadTrackAndItsKey) {
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()), "camera.track_file: needed with camera.mode = track");
   }
+}
+
+// A track named in a scene file is found beside it, as object.mesh_file is; on the command line a
+// relative path is the current folder's.
+TEST(CameraTrackFile, RelativeTrackFileIsTakenFromTheSceneFilesFolder) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("fragsim_track_" + std::to_string(::getpid()));
+  fs::create_directories(dir / "flights");
+  std::ofstream(dir / "flights" / "t.csv") << kHeader << "\n0,0,1,0,0,0,-1,0,1,0\n";
+  std::ofstream(dir / "flights" / "t.ini") << "[camera]\nmode = track\ntrack_file = t.csv\n";
+  const Scene s = load_scene((dir / "flights" / "t.ini").string());
+  EXPECT_EQ(s.camera.track_file, (dir / "flights" / "t.csv").string());
+  EXPECT_EQ(s.camera.track_samples.size(), 1u);
+  const fs::path cwd = fs::current_path();
+  fs::current_path(dir);
+  const Scene cli =
+      load_scene("", {{"camera.mode", "track"}, {"camera.track_file", "flights/t.csv"}});
+  fs::current_path(cwd);
+  EXPECT_EQ(cli.camera.track_file, (dir / "flights" / "t.csv").string());
+  EXPECT_EQ(cli.camera.track_samples.size(), 1u);
+  fs::remove_all(dir);
 }
 
 // The camera.csv of a path run, replayed as a track, gives that run's counts for every strategy.
