@@ -165,8 +165,10 @@ std::vector<fragsim::FragmentSpawn> shapes_spawns(Piece piece) {
   return spawns;
 }
 
-void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase) {
+// `contacts`: simulation.convex_ground_contacts (8, the default, keeps every corner ODE returns).
+void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase, int contacts = 8) {
   Overrides overrides;
+  overrides.push_back({"simulation.convex_ground_contacts", std::to_string(contacts)});
   if (phase == Phase::kFlight) overrides.push_back({"ground.enabled", "off"});
   if (phase == Phase::kGroundCollisions) {
     overrides.push_back({"simulation.fragment_collisions", "on"});
@@ -189,9 +191,9 @@ void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase) {
   state.counters["awake_at_end"] = world.awake_count();
 }
 
-#define PHYSICS_SHAPES(name, piece, phase)                \
-  BENCHMARK_CAPTURE(BM_PhysicsShapes, name, piece, phase) \
-      ->Iterations(kTimedSteps)                           \
+#define PHYSICS_SHAPES(name, ...)                        \
+  BENCHMARK_CAPTURE(BM_PhysicsShapes, name, __VA_ARGS__) \
+      ->Iterations(kTimedSteps)                          \
       ->Unit(benchmark::kMillisecond)
 
 PHYSICS_SHAPES(boxes_flight, Piece::kBox, Phase::kFlight);
@@ -203,5 +205,7 @@ PHYSICS_SHAPES(voronoi_flight, Piece::kVoronoi, Phase::kFlight);
 PHYSICS_SHAPES(voronoi_ground, Piece::kVoronoi, Phase::kGround);
 PHYSICS_SHAPES(voronoi_ground_collisions, Piece::kVoronoi, Phase::kGroundCollisions);
 PHYSICS_SHAPES(convex_ground_collisions, Piece::kConvex, Phase::kGroundCollisions);
+PHYSICS_SHAPES(voronoi_ground_4_contacts, Piece::kVoronoi, Phase::kGround, 4);
+PHYSICS_SHAPES(voronoi_ground_collisions_4_contacts, Piece::kVoronoi, Phase::kGroundCollisions, 4);
 
 }  // namespace

@@ -12,7 +12,10 @@
 // thread's CPU time (CLOCK_THREAD_CPUTIME_ID), so other processes on a shared machine do not
 // count; on an idle machine it equals the wall time. Prints one CSV line:
 // fragments, config, median and 95th percentile ms per step, peak RSS in MiB, then the steps
-// timed, the settling steps and the fragments still awake at the end.
+// timed, the settling steps and the fragments still awake at the end. With SETTLE_STEPS 0 and
+// STEPS the scene's step count the times cover the whole run, the landing included. The
+// environment variable FRAGSIM_STEP_MS, when set, names a file that gets every timed step's
+// time and awake fragments (step,ms,awake), to see where the slow steps fall.
 
 #include <sys/resource.h>
 #include <time.h>
@@ -20,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <string>
 #include <vector>
@@ -99,13 +103,26 @@ int run(int argc, char** argv) {
   fragsim::World world(scene, {}, fragsim::explode(scene));
   const double dt = scene.sim.dt_s;
   std::vector<double> ms;
+  std::vector<int> awake;
   ms.reserve(static_cast<std::size_t>(steps));
   for (int k = 0; k < settle + steps; ++k) {
     const double t = k * dt;
     const double start = thread_cpu_ms();
     world.set_camera(path.pose_at(t), path.velocity_at(t));
     world.step(dt);
-    if (k >= settle) ms.push_back(thread_cpu_ms() - start);
+    if (k >= settle) {
+      ms.push_back(thread_cpu_ms() - start);
+      awake.push_back(world.awake_count());
+    }
+  }
+  if (const char* file = std::getenv("FRAGSIM_STEP_MS")) {
+    std::FILE* f = std::fopen(file, "w");
+    if (f == nullptr) throw std::invalid_argument(std::string("cannot write ") + file);
+    std::fprintf(f, "step,ms,awake\n");
+    for (std::size_t k = 0; k < ms.size(); ++k) {
+      std::fprintf(f, "%zu,%.4f,%d\n", k + static_cast<std::size_t>(settle), ms[k], awake[k]);
+    }
+    std::fclose(f);
   }
   std::printf("%d,%s,%.4f,%.4f,%.1f,%d,%d,%d\n", world.fragment_count(), config.c_str(),
               quantile(ms, 0.5), quantile(ms, 0.95), peak_rss_mib(), steps, settle,

@@ -7,7 +7,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <span>
 #include <tuple>
+#include <vector>
 
 namespace fragsim {
 namespace {
@@ -115,16 +117,30 @@ double split(double a, double b) {
 // or is not under half the step before, is replaced by halving the bracket (the safeguard of
 // Numerical Recipes' rtsafe, section 9.4). Ends when the Newton step is below an ulp or the
 // bracket is two adjacent doubles: as close to the computed p's sign change as bisection gets.
+// One search as a state advanced an iteration at a time, so that many of them can be advanced in
+// turn (solve_bracketed_many): each search does the same operations either way.
 template <int D>
-double solve_bracketed(const Quartic& c, double a, double b, double fa, double fb) {
-  double neg = fa < 0.0 ? a : b;  // computed p < 0 here
-  double pos = fa < 0.0 ? b : a;  // computed p > 0 here
-  double x = a - fa * ((b - a) / (fb - fa));
-  if (!(x > a && x < b)) x = split(a, b);
-  double step = b - a;
-  for (int i = 0; i < kMaxIterations; ++i) {
-    const Sample s = sample<D>(c, x);
-    if (s.p == 0.0) return x;
+struct BracketedSearch {
+  const Quartic* c = nullptr;
+  double neg = 0.0;  // computed p < 0 here
+  double pos = 0.0;  // computed p > 0 here
+  double x = 0.0;
+  double step = 0.0;
+  int iteration = 0;
+
+  BracketedSearch() = default;
+  BracketedSearch(const Quartic& poly, double a, double b, double fa, double fb)
+      : c(&poly), neg(fa < 0.0 ? a : b), pos(fa < 0.0 ? b : a), step(b - a) {
+    x = a - fa * ((b - a) / (fb - fa));
+    if (!(x > a && x < b)) x = split(a, b);
+  }
+
+  // One iteration; true when the search has ended, its root then in x.
+  bool advance() {
+    if (iteration == kMaxIterations) return true;
+    ++iteration;
+    const Sample s = sample<D>(*c, x);
+    if (s.p == 0.0) return true;
     (s.p < 0.0 ? neg : pos) = x;
     const double lo = std::min(neg, pos);
     const double hi = std::max(neg, pos);
@@ -132,17 +148,46 @@ double solve_bracketed(const Quartic& c, double a, double b, double fa, double f
     const double newton_step = std::abs(newton - x);
     const double step_before = step;
     if (newton > lo && newton < hi && newton_step < 0.5 * step_before) {
-      if (newton_step <= kEps * std::abs(newton)) return newton;
-      step = newton_step;
       x = newton;
+      if (newton_step <= kEps * std::abs(newton)) return true;
+      step = newton_step;
     } else {
       const double m = split(lo, hi);
-      if (!(m > lo && m < hi)) return x;
+      if (!(m > lo && m < hi)) return true;
       step = hi - lo;
       x = m;
     }
+    return false;
   }
-  return x;
+};
+
+template <int D>
+double solve_bracketed(const Quartic& c, double a, double b, double fa, double fb) {
+  BracketedSearch<D> search(c, a, b, fa, fb);
+  while (!search.advance()) {
+  }
+  return search.x;
+}
+
+// Every search to its end, advanced in turn: one search's iteration is a chain of dependent
+// operations (Horner's rule, a division), so taking several chains in turn lets the processor
+// overlap them, where one search alone waits on each.
+template <int D>
+void solve_bracketed_many(std::span<BracketedSearch<D>> searches) {
+  std::size_t live = searches.size();
+  std::array<std::size_t, 64> order{};
+  for (std::size_t begin = 0; begin < searches.size(); begin += order.size()) {
+    const std::size_t end = std::min(searches.size(), begin + order.size());
+    live = 0;
+    for (std::size_t j = begin; j < end; ++j) order[live++] = j;
+    while (live > 0) {
+      std::size_t kept = 0;
+      for (std::size_t k = 0; k < live; ++k) {
+        if (!searches[order[k]].advance()) order[kept++] = order[k];
+      }
+      live = kept;
+    }
+  }
 }
 
 template <int D>
@@ -348,6 +393,135 @@ std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi) 
     default:
       return c[0] <= 0.0 ? std::optional<double>(lo) : std::nullopt;
   }
+}
+
+// FirstNonpositiveBatch: first_nonpositive_of<4> cut where it waits on a root search. Per
+// polynomial, first the derivative's roots as real_roots_of<3> finds them (its break points and
+// samples, each sign change a search to run, each near-zero sample a root as it is), then, with
+// every one of those searches done, the break points of the quartic and its first sign change (a
+// search), then those searches. Other degrees (no gravity) go through first_nonpositive.
+struct FirstNonpositiveBatch::Work {
+  // Where a quartic stands between the stages.
+  enum class State { kDone, kCritical, kCrossing };
+  struct Entry {
+    double value = 0.0;  // a root as it is, when search < 0
+    int search = -1;     // else the cubic search that finds it
+  };
+  struct Pending {
+    State state = State::kDone;
+    std::array<Entry, 2 * kCapacity> entries{};
+    std::size_t entry_count = 0;
+    int crossing = -1;  // the quartic search
+  };
+  std::vector<std::optional<double>> out;
+  std::vector<Pending> pending;
+  std::vector<BracketedSearch<3>> cubic_searches;
+  std::vector<BracketedSearch<4>> quartic_searches;
+  std::vector<Quartic> derivatives;
+};
+
+FirstNonpositiveBatch::FirstNonpositiveBatch() : work_(std::make_unique<Work>()) {}
+FirstNonpositiveBatch::~FirstNonpositiveBatch() = default;
+FirstNonpositiveBatch::FirstNonpositiveBatch(const FirstNonpositiveBatch& other)
+    : work_(std::make_unique<Work>(*other.work_)) {}
+FirstNonpositiveBatch& FirstNonpositiveBatch::operator=(const FirstNonpositiveBatch& other) {
+  if (this != &other) *work_ = *other.work_;
+  return *this;
+}
+
+std::span<const std::optional<double>> FirstNonpositiveBatch::run(std::span<const Quartic> c,
+                                                                  double lo,
+                                                                  std::span<const double> hi) {
+  Work& w = *work_;
+  const std::size_t n = c.size();
+  w.out.assign(n, std::nullopt);
+  w.pending.resize(n);
+  w.derivatives.resize(n);
+  w.cubic_searches.clear();
+  w.quartic_searches.clear();
+  // Stage 1: what first_nonpositive_of<4> does before break_points<4>, then real_roots_of<3> on
+  // the derivative up to its searches.
+  for (std::size_t j = 0; j < n; ++j) {
+    Work::Pending& pj = w.pending[j];
+    pj.state = Work::State::kDone;
+    pj.entry_count = 0;
+    if (!usable(c[j], lo, hi[j]) || degree(c[j]) != 4) {
+      w.out[j] = first_nonpositive(c[j], lo, hi[j]);
+      continue;
+    }
+    const Sample first = sample<4>(c[j], lo);
+    if (first.p <= 0.0 || near_zero(first)) {
+      w.out[j] = lo;
+      continue;
+    }
+    if (clearly_positive<4>(c[j], lo, hi[j])) continue;
+    w.derivatives[j] = derivative(c[j]);
+    const Quartic& dc = w.derivatives[j];
+    Points pts;
+    const std::size_t m = break_points<3>(dc, lo, hi[j], pts);
+    auto value = [&pj](double r) { pj.entries[pj.entry_count++] = {r, -1}; };
+    Sample sa = sample<3>(dc, pts[0]);
+    bool za = near_zero(sa);
+    if (za) value(pts[0]);
+    for (std::size_t i = 0; i + 1 < m; ++i) {
+      const Sample sb = sample<3>(dc, pts[i + 1]);
+      const bool zb = near_zero(sb);
+      if (!za && !zb && (sa.p < 0.0) != (sb.p < 0.0)) {
+        pj.entries[pj.entry_count++] = {0.0, static_cast<int>(w.cubic_searches.size())};
+        w.cubic_searches.emplace_back(dc, pts[i], pts[i + 1], sa.p, sb.p);
+      }
+      if (zb) value(pts[i + 1]);
+      sa = sb;
+      za = zb;
+    }
+    pj.state = Work::State::kCritical;
+  }
+  solve_bracketed_many<3>(w.cubic_searches);
+  // Stage 2: real_roots_of<3>'s list from its entries, break_points<4> from that, then the scan
+  // of first_nonpositive_of<4> up to its search.
+  for (std::size_t j = 0; j < n; ++j) {
+    Work::Pending& pj = w.pending[j];
+    if (pj.state != Work::State::kCritical) continue;
+    pj.state = Work::State::kDone;
+    Points crit;
+    std::size_t count = 0;
+    for (std::size_t e = 0; e < pj.entry_count; ++e) {
+      const Work::Entry& entry = pj.entries[e];
+      const double r = entry.search < 0
+                           ? entry.value
+                           : w.cubic_searches[static_cast<std::size_t>(entry.search)].x;
+      if (count < kCapacity && (count == 0 || r > crit[count - 1])) crit[count++] = r;
+    }
+    Points pts;
+    std::size_t m = 0;
+    pts[m++] = lo;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (crit[i] > pts[m - 1] && crit[i] < hi[j] && m + 1 < kCapacity) pts[m++] = crit[i];
+    }
+    pts[m++] = hi[j];
+    Sample prev = sample<4>(c[j], lo);
+    for (std::size_t i = 1; i < m; ++i) {
+      const Sample s = sample<4>(c[j], pts[i]);
+      if (near_zero(s)) {
+        w.out[j] = pts[i];
+        break;
+      }
+      if (s.p < 0.0) {
+        pj.state = Work::State::kCrossing;
+        pj.crossing = static_cast<int>(w.quartic_searches.size());
+        w.quartic_searches.emplace_back(c[j], pts[i - 1], pts[i], prev.p, s.p);
+        break;
+      }
+      prev = s;
+    }
+  }
+  solve_bracketed_many<4>(w.quartic_searches);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (w.pending[j].state == Work::State::kCrossing) {
+      w.out[j] = w.quartic_searches[static_cast<std::size_t>(w.pending[j].crossing)].x;
+    }
+  }
+  return w.out;
 }
 
 }  // namespace fragsim

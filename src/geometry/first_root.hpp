@@ -12,7 +12,9 @@
 // it against a long-double companion-matrix reference.
 
 #include <array>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace fragsim {
@@ -43,5 +45,25 @@ RootList list_real_roots(const Quartic& c, double lo, double hi);
 // Allocation-free; a Bernstein-coefficient test settles most paths that stay clear of the ball
 // without a search.
 std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi);
+
+// first_nonpositive of many polynomials, c[j] on [lo, hi[j]], with the same answers bit for bit:
+// the root searches of all of them (those of the derivative that bracket each, then each one's
+// first crossing) are advanced in turn, so the processor overlaps their chains of dependent
+// operations where one search alone waits on each. Keeps its work space between calls.
+class FirstNonpositiveBatch {
+ public:
+  FirstNonpositiveBatch();
+  ~FirstNonpositiveBatch();
+  FirstNonpositiveBatch(const FirstNonpositiveBatch&);
+  FirstNonpositiveBatch& operator=(const FirstNonpositiveBatch&);
+
+  // One answer per polynomial, in order; valid until the next call.
+  std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
+                                             std::span<const double> hi);
+
+ private:
+  struct Work;
+  std::unique_ptr<Work> work_;
+};
 
 }  // namespace fragsim

@@ -101,7 +101,10 @@ std::vector<KeySpec> keys_before_strategies() {
               &D::rest_angular_radps, closed(0, 1000)),
          integer("rest_steps", "",
                  "steps in a row below both thresholds before a fragment is at rest",
-                 &D::rest_steps, 1, 1000000)});
+                 &D::rest_steps, 1, 1000000),
+         integer("convex_ground_contacts", "",
+                 "contacts kept for a convex piece on the ground, spread over its footprint",
+                 &D::convex_ground_contacts, 1, 8)});
   }
   {
     using D = ObjectDef;

@@ -252,6 +252,46 @@ int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& 
   return count;
 }
 
+// Keeps `keep` of the n contacts at out (stride `skip`) spread over the footprint, in place: the
+// deepest, then each time the one farthest from all kept so far (first in ODE's order on a tie).
+// A piece resting on a face with many corners keeps its support polygon's extremes; n <= keep
+// leaves the contacts as they are.
+int keep_spread(dContactGeom* out, int n, int keep, int skip) {
+  if (n <= keep) return n;
+  auto* bytes = reinterpret_cast<char*>(out);
+  auto at = [&](int i) { return reinterpret_cast<dContactGeom*>(bytes + i * skip); };
+  std::array<dContactGeom, kMaxConvexContacts> all{};
+  for (int i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = *at(i);
+  std::array<double, kMaxConvexContacts> nearest2{};
+  std::array<char, kMaxConvexContacts> taken{};
+  int first = 0;
+  for (int i = 1; i < n; ++i) {
+    if (all[static_cast<std::size_t>(i)].depth > all[static_cast<std::size_t>(first)].depth) {
+      first = i;
+    }
+  }
+  nearest2.fill(INFINITY);
+  int pick = first;
+  for (int k = 0; k < keep; ++k) {
+    const dContactGeom& chosen = all[static_cast<std::size_t>(pick)];
+    taken[static_cast<std::size_t>(pick)] = 1;
+    *at(k) = chosen;
+    int next = -1;
+    for (int i = 0; i < n; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      if (taken[u]) continue;
+      double d2 = 0.0;
+      for (int c = 0; c < 3; ++c)
+        d2 += (all[u].pos[c] - chosen.pos[c]) * (all[u].pos[c] - chosen.pos[c]);
+      nearest2[u] = std::min(nearest2[u], d2);
+      if (next < 0 || nearest2[u] > nearest2[static_cast<std::size_t>(next)]) next = i;
+    }
+    if (next < 0) return k + 1;
+    pick = next;
+  }
+  return keep;
+}
+
 // Slack added to the distance within which the camera (or its wall) wakes a culled fragment.
 constexpr double kWakeMargin_m = 0.05;
 
@@ -299,6 +339,7 @@ struct World::Impl {
   int wall_contact_count = 0;
   bool fragment_collisions = false;
   bool exact_solver = false;
+  int convex_ground_contacts = kMaxConvexContacts;  // simulation.convex_ground_contacts
   GroundDef ground;
 
   // Skips (simulation.auto_disable, simulation.cull_resting).
@@ -418,9 +459,11 @@ struct World::Impl {
   int collide(dGeomID a, const GeomTag* ta, dGeomID b, const GeomTag* tb, int max_count,
               dContactGeom* out, int skip) const {
     const bool convex = shape_of(ta) != nullptr || shape_of(tb) != nullptr;
-    if (!convex || tb->kind == GeomKind::kGround || tb->kind == GeomKind::kCameraSensor) {
-      return dCollide(a, b, max_count, out, skip);
+    if (convex && tb->kind == GeomKind::kGround) {
+      return keep_spread(out, dCollide(a, b, max_count, out, skip),
+                         std::min(max_count, convex_ground_contacts), skip);
     }
+    if (!convex || tb->kind == GeomKind::kCameraSensor) return dCollide(a, b, max_count, out, skip);
     return convex_manifold(a, hull_of(a, ta), b, hull_of(b, tb), max_count, out, skip);
   }
 
@@ -478,6 +521,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
   Impl& w = *impl_;
   w.fragment_collisions = scene.sim.fragment_collisions;
+  w.convex_ground_contacts = std::clamp(scene.sim.convex_ground_contacts, 1, kMaxConvexContacts);
   // A wall joins every fragment touching it into one island, and the exact solver is cubic in an
   // island's size (341 fragments on the wall: 3.6 s for one step, 0.011 s with QuickStep).
   w.exact_solver =

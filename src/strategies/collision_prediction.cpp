@@ -79,10 +79,12 @@ ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector
   return solve_contact(path, camera_m, model, t_horizon_s);
 }
 
-ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
-                                const ReachModel& model, double t_horizon_s) {
-  ContactPrediction out;
-  out.t_horizon_s = t_horizon_s;
+namespace {
+
+// solve_contact up to its root search: false when the margin-free rejection settles the path
+// clear, else true with the quartic whose first non-positive point in [0, t_horizon] is the entry.
+bool contact_quartic(const BallisticPath& path, const Eigen::Vector3d& camera_m,
+                     const ReachModel& model, double t_horizon_s, Quartic& out) {
   const BallSize ball = ball_size(model, t_horizon_s);
   const double r0 = ball.r0_m;
   const double growth = ball.growth_mps;
@@ -94,9 +96,20 @@ ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d
   const double horizon_s = std::max(t_horizon_s, 0.0);
   const double closest_m = (path.p0_m - camera_m).norm() - path.v0_mps.norm() * horizon_s -
                            0.5 * path.accel_mps2.norm() * horizon_s * horizon_s;
-  if (closest_m > r0 + growth * horizon_s) return out;
-  const auto t =
-      first_nonpositive(ball_contact_quartic(path, camera_m, r0, growth), 0.0, t_horizon_s);
+  if (closest_m > r0 + growth * horizon_s) return false;
+  out = ball_contact_quartic(path, camera_m, r0, growth);
+  return true;
+}
+
+}  // namespace
+
+ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
+                                const ReachModel& model, double t_horizon_s) {
+  ContactPrediction out;
+  out.t_horizon_s = t_horizon_s;
+  Quartic q;
+  if (!contact_quartic(path, camera_m, model, t_horizon_s, q)) return out;
+  const auto t = first_nonpositive(q, 0.0, t_horizon_s);
   if (t) {
     out.candidate = true;
     out.t_contact_s = *t;
@@ -145,13 +158,26 @@ std::span<const ContactPrediction> ContactPredictor::predict(
   };
   out_.assign(which.size(), ContactPrediction{});
   screened_.clear();
+  quartics_.clear();
+  quartic_horizons_s_.clear();
+  quartic_of_.clear();
+  // solve_contact for out_[k], whose t_horizon_s is set, up to its root search.
+  const auto defer_solve = [&](std::size_t k, const BallisticPath& p, const ReachModel& model) {
+    Quartic q;
+    const double th = out_[k].t_horizon_s;
+    if (!contact_quartic(p, query.camera_m, model, th, q)) return;
+    quartics_.push_back(q);
+    quartic_horizons_s_.push_back(th);
+    quartic_of_.push_back(static_cast<int>(k));
+  };
   for (std::size_t k = 0; k < which.size(); ++k) {
     if (screen.empty() || screen[k]) {
       screened_.push_back(static_cast<int>(k));
       continue;
     }
     const BallisticPath p = query.path(fragment(k));
-    out_[k] = solve_contact(p, query.camera_m, query.model(fragment(k)), query.t_horizon_s(p));
+    out_[k].t_horizon_s = query.t_horizon_s(p);
+    defer_solve(k, p, query.model(fragment(k)));
   }
   // The screened ones, one pass at a time over arrays: their paths, t_G two at a time and the
   // balls, then the rejection over all of them.
@@ -193,7 +219,16 @@ std::span<const ContactPrediction> ContactPredictor::predict(
     if (clears[j]) continue;
     const auto k = static_cast<std::size_t>(screened_[j]);
     const FragmentState& f = fragment(k);
-    out_[k] = solve_contact(query.path(f), query.camera_m, query.model(f), out_[k].t_horizon_s);
+    defer_solve(k, query.path(f), query.model(f));
+  }
+  // The root searches of all of them together (the same answers as solve_contact's one by one).
+  const std::span<const std::optional<double>> roots =
+      roots_.run(quartics_, 0.0, quartic_horizons_s_);
+  for (std::size_t q = 0; q < roots.size(); ++q) {
+    if (!roots[q]) continue;
+    ContactPrediction& pred = out_[static_cast<std::size_t>(quartic_of_[q])];
+    pred.candidate = true;
+    pred.t_contact_s = *roots[q];
   }
   return out_;
 }

@@ -95,6 +95,11 @@ class ContactPredictor {
   std::vector<int> screened_;  // positions in `which` that go through the rejection
   // Of the screened fragments: the path's velocity and height, the radius, t_G.
   std::vector<double> vy_, py_, radius_, t_horizon_;
+  // The quartics left to solve, their horizons and the positions in `which` they answer for.
+  std::vector<Quartic> quartics_;
+  std::vector<double> quartic_horizons_s_;
+  std::vector<int> quartic_of_;
+  FirstNonpositiveBatch roots_;
   std::vector<ContactPrediction> out_;
 };
 

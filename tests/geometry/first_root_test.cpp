@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <random>
+#include <span>
 #include <vector>
 
 namespace fragsim {
@@ -208,6 +211,64 @@ TEST(FirstRoot, ListedRootsAreRealRoots) {
   EXPECT_EQ(
       list_real_roots({1.0, std::numeric_limits<double>::infinity(), 0.0, 0.0, 0.0}, 0.0, 1.0).n,
       0u);
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// The batch must give first_nonpositive's answers bit for bit (`edge`'s pinned results rest on
+// it): every kind of case the scalar path has, in one batch so that their searches interleave.
+TEST(FirstRootBatch, SameAnswersBitForBitAsOneAtATime) {
+  std::vector<Quartic> polys = {
+      from_roots(0.5, 2.0, 3.0, 4.0),      // an entry at 0.5
+      from_roots(-1.0, 2.0, 5.0, 6.0),     // inside at the start: 0
+      from_roots(1.0, 1.0, 3.0, 4.0),      // a double root: a touch at 1
+      from_roots(11.0, 12.0, 13.0, 14.0),  // no root in [0, 10]
+      {1.0, -2.0, 1.0, 0.0, 0.0},          // a quadratic: the scalar path
+      {0.0, 0.0, 0.0, 0.0, 0.0},           // a constant
+      {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 1.0},  // unusable
+  };
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> root(-30.0, 40.0);
+  std::uniform_real_distribution<double> scale(0.1, 100.0);
+  for (int k = 0; k < 2000; ++k) {
+    Quartic q = from_roots(root(rng), root(rng), root(rng), root(rng));
+    const double s = scale(rng);
+    for (double& c : q) c *= s;
+    // Lift some off the axis so that they touch, graze or miss.
+    if (k % 3 == 0) q[0] += scale(rng);
+    polys.push_back(q);
+  }
+  std::vector<double> hi(polys.size(), 10.0);
+  hi[3] = 10.0;
+  FirstNonpositiveBatch batch;
+  const auto got = batch.run(polys, 0.0, hi);
+  ASSERT_EQ(got.size(), polys.size());
+  int roots = 0;
+  for (std::size_t j = 0; j < polys.size(); ++j) {
+    const auto want = first_nonpositive(polys[j], 0.0, hi[j]);
+    ASSERT_EQ(got[j].has_value(), want.has_value()) << j;
+    if (!want) continue;
+    ++roots;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(*got[j]), std::bit_cast<std::uint64_t>(*want)) << j;
+  }
+  EXPECT_NEAR(*got[0], 0.5, 1e-12);
+  EXPECT_EQ(*got[1], 0.0);
+  EXPECT_NEAR(*got[2], 1.0, 1e-6);
+  EXPECT_FALSE(got[3].has_value());
+  EXPECT_EQ(*got[4], 1.0);
+  EXPECT_FALSE(got[6].has_value());
+  // Both outcomes are well represented among the random ones.
+  EXPECT_GT(roots, 500);
+  EXPECT_LT(roots, 1900);
+  // The work space is reused: a second, smaller batch gives its own answers.
+  const auto again = batch.run(std::span<const Quartic>(polys).first(1), 0.0,
+                               std::span<const double>(hi).first(1));
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_NEAR(*again[0], 0.5, 1e-12);
 }
 
 }  // namespace

@@ -6,9 +6,11 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sim/camera_path.hpp"
+#include "sim/scene_file.hpp"
 #include "sim/world.hpp"
 #include "sim/world_probe.hpp"
 #include "support/convex_shapes.hpp"
@@ -403,6 +405,85 @@ TEST(WorldConvex, PieceTouchingTheCameraBodyIsACameraHit) {
   // from -3 m at 0.1 m a step, reaches in step 28 or 29 (contacts are found before each step).
   EXPECT_GE(first_hit, 28);
   EXPECT_LE(first_hit, 29);
+}
+
+}  // namespace
+}  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// An octagonal prism (circumradius r, height 2 h) lying on an octagon: 8 corners on the ground.
+ConvexShape octagonal_prism(double r_m, double h_m) {
+  std::vector<Eigen::Vector3d> v;
+  for (double y : {-h_m, h_m}) {
+    for (int k = 0; k < 8; ++k) {
+      const double a = k * M_PI / 4.0;
+      v.emplace_back(r_m * std::cos(a), y, r_m * std::sin(a));
+    }
+  }
+  std::vector<std::vector<int>> faces = {{0, 1, 2, 3, 4, 5, 6, 7}, {15, 14, 13, 12, 11, 10, 9, 8}};
+  for (int k = 0; k < 8; ++k) faces.push_back({k, k + 8, (k + 1) % 8 + 8, (k + 1) % 8});
+  const double volume_m3 = 2.0 * std::sqrt(2.0) * r_m * r_m * 2.0 * h_m;
+  return test::finish_shape(v, faces, volume_m3, Eigen::Matrix3d::Identity() * r_m * r_m / 4.0);
+}
+
+// simulation.convex_ground_contacts: all 8 corners by default; fewer are spread over the
+// footprint. Of 8 corners on a circle of radius r, farthest-point picking from corner 0 takes
+// corner 4 (2 r away), then 2 and 6: a square of side r sqrt(2), the widest 4 the octagon has.
+TEST(WorldConvexPairs, ConvexGroundContactsAreSpreadOverTheFootprint) {
+  const double r = 0.05;
+  const double h = 0.02;
+  const auto prism = shared(octagonal_prism(r, h));
+  EXPECT_EQ(Scene{}.sim.convex_ground_contacts, 8);
+  for (int keep : {8, 4, 2, 1}) {
+    Scene scene = still_scene();
+    scene.sim.convex_ground_contacts = keep;
+    World world(scene, {}, {piece(prism, {0.0, h - 0.001, -2.0})});
+    const std::vector<ProbeContact> c = WorldProbe::contacts(world, 0, ProbeTarget::kGround);
+    ASSERT_EQ(c.size(), static_cast<std::size_t>(keep)) << keep;
+    double closest_m = INFINITY;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      EXPECT_NEAR(c[i].depth_m, 0.001, 1e-12);
+      EXPECT_NEAR(c[i].normal.y(), 1.0, 1e-12);
+      for (std::size_t j = i + 1; j < c.size(); ++j) {
+        closest_m = std::min(closest_m, (c[i].position_m - c[j].position_m).norm());
+      }
+    }
+    if (keep == 4) {
+      EXPECT_NEAR(closest_m, r * std::sqrt(2.0), 1e-9);
+    }
+    if (keep == 2) {
+      EXPECT_NEAR(closest_m, 2.0 * r, 1e-9);
+    }
+    // Between neighbouring corners of the octagon: 2 r sin(22.5 degrees).
+    if (keep == 8) {
+      EXPECT_NEAR(closest_m, 2.0 * r * std::sin(M_PI / 8.0), 1e-9);
+    }
+  }
+  // A box keeps its 4 whatever the setting.
+  Scene scene = still_scene();
+  scene.sim.convex_ground_contacts = 1;
+  World world(scene, {}, {box(0.05, {0.0, 0.049, -2.0})});
+  EXPECT_EQ(WorldProbe::contacts(world, 0, ProbeTarget::kGround).size(), 4u);
+}
+
+TEST(WorldConvexPairs, ConvexGroundContactsKeyIsRangeChecked) {
+  auto error_of = [](const std::string& text) {
+    try {
+      parse_scene(text, "bad.ini");
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(parse_scene("[simulation]\nconvex_ground_contacts = 4\n", "ok.ini")
+                .sim.convex_ground_contacts,
+            4);
+  EXPECT_EQ(error_of("[simulation]\nconvex_ground_contacts = 0\n"),
+            "bad.ini:2: simulation.convex_ground_contacts = '0': must be a whole number in [1, 8]");
+  EXPECT_EQ(error_of("[simulation]\nconvex_ground_contacts = 9\n"),
+            "bad.ini:2: simulation.convex_ground_contacts = '9': must be a whole number in [1, 8]");
 }
 
 }  // namespace
