@@ -102,7 +102,11 @@ const ParamSpec<EdgeMinParams>& edge_min_param_spec() {
        integer("cover_cells", "",
                "cover_max: cells across the central region's width in the predicted coverage "
                "grid (rows follow the aspect)",
-               &P::cover_cells, 2, 256)},
+               &P::cover_cells, 2, 256),
+       real("cover_margin", "",
+            "cover_max: how far under the bound the prediction aims, for its own error (discs "
+            "and coarse cells against the metric's boxes and pixels)",
+            &P::cover_margin, closed(0, 0.5))},
       {}};
   return spec;
 }

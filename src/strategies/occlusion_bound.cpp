@@ -196,7 +196,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
       own_[at] = paint(j, disc_[at], +1);
     }
   }
-  const double bound_cells = params.cover_max * static_cast<double>(cells);
+  const double bound_cells = (params.cover_max - params.cover_margin) * static_cast<double>(cells);
   const auto share = [&](int j) {
     return covered_[static_cast<std::size_t>(j)] / static_cast<double>(cells);
   };

@@ -17,15 +17,16 @@
 // most cells there (the nearest and largest on screen) are taken in turn, and each is given the
 // least constant push, toward the screen edge of least push over weight, that takes its disc out
 // of the region at every over-bound time it covers, within a_max; the grid is then redrawn with
-// its pushed path. It stops once no sample is over the bound, or no fragment is left that can
-// still help. Re-solved every step from the new state, like the push against the camera, so a
-// push fades once it is no longer needed; the fragments pushed last step are taken first, so a
-// plan stays with the fragments it started with. What a push added is taken back once the
-// fragment is behind the camera and receding, where it cannot be seen again.
-// The order: cells covered at an over-bound sample per unit of push (the cheapest coverage to
-// remove first, which clears the cloud from the region's borders inward), not the largest disc:
-// on front.ini at cover_max = 0.5 the largest-first order cost 1.27 m of mean deviation and
-// 1181 N s, this one 1.23 m and 969 N s (docs/visibility.md).
+// its pushed path. It stops once no sample is over the bound (aimed cover_margin under cover_max,
+// for the prediction's own error), or no fragment is left that can still help. Re-solved every step
+// from the new state, like the push against the camera, so a push fades once it is no longer
+// needed; the fragments pushed last step are taken first, so a plan stays with the fragments it
+// started with. What a push added is taken back once the fragment is behind the camera and
+// receding, where it cannot be seen again. The order: cells covered at an over-bound sample per
+// unit of push (the cheapest coverage to remove first, which clears the cloud from the region's
+// borders inward), not the largest disc: on front.ini at cover_max = 0.5 the largest-first order
+// cost 1.27 m of mean deviation and 1181 N s, this one 1.23 m and 969 N s, both without
+// cover_margin (docs/visibility.md).
 //
 // Cost per step: one pass over the fragments for each sample time (a position and a disc),
 // cells filled only inside each disc's bounding rows and columns, and per pushed fragment one
