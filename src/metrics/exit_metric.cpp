@@ -65,6 +65,7 @@ void ExitMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
   last_exit_.assign(n, Exit::kNone);
   passed_close_.assign(n, 0);
   touched_.assign(n, 0);
+  pushed_.assign(n, 0);
   prev_state_.assign(n, FragmentState{});
   prev_camera_ = initial.camera;
   const double near_miss2 = near_miss_m_ * near_miss_m_;
@@ -110,6 +111,10 @@ void ExitMetric::observe(const StepSnapshot& snap) {
     if (f.shape) prev_state_[i] = f;
   }
   prev_camera_ = snap.camera;
+  for (const AppliedForce& f : snap.forces) {
+    assert(f.fragment >= 0 && static_cast<std::size_t>(f.fragment) < pushed_.size());
+    pushed_[static_cast<std::size_t>(f.fragment)] = 1;  // as forced_fragments counts them
+  }
   for (int f : snap.camera_hits) {
     assert(f >= 0 && static_cast<std::size_t>(f) < touched_.size());
     touched_[static_cast<std::size_t>(f)] = 1;
@@ -124,7 +129,37 @@ void ExitMetric::fill(RunSummary& s) const {
   s.exits_near = 0;
   s.exits_stayed = 0;
   s.near_misses = 0;
+  s.pushed_exits_top = 0;
+  s.pushed_exits_bottom = 0;
+  s.pushed_exits_left = 0;
+  s.pushed_exits_right = 0;
+  s.pushed_exits_near = 0;
+  s.pushed_exits_stayed = 0;
   for (int f = 0; f < fragments(); ++f) {
+    if (pushed(f)) {
+      switch (exit(f)) {
+        case Exit::kNone:
+          break;
+        case Exit::kTop:
+          ++s.pushed_exits_top;
+          break;
+        case Exit::kBottom:
+          ++s.pushed_exits_bottom;
+          break;
+        case Exit::kLeft:
+          ++s.pushed_exits_left;
+          break;
+        case Exit::kRight:
+          ++s.pushed_exits_right;
+          break;
+        case Exit::kNear:
+          ++s.pushed_exits_near;
+          break;
+        case Exit::kStayed:
+          ++s.pushed_exits_stayed;
+          break;
+      }
+    }
     switch (exit(f)) {
       case Exit::kNone:
         break;

@@ -7,7 +7,9 @@
 // whose box (a convex piece: the polytope for the near rectangle, its hull's camera-aligned box
 // for the camera body, never its looser body box) never met the near rectangle or the camera body
 // (swept_box.hpp, or the physics' sensor): the fly-by that makes the shot, as opposed to a clip.
-// The centre is a convex piece's centre of mass.
+// The centre is a convex piece's centre of mass. The same exits are also counted over the pushed
+// fragments alone (any force in any step): a strategy changes only their exits, so their shares
+// show where it sends debris (edge-min.edge_weights).
 
 #include <string_view>
 #include <vector>
@@ -45,6 +47,8 @@ class ExitMetric final : public RunObserver {
   }
   // Whether the fragment met the near rectangle or the camera body.
   bool touched(int fragment) const { return touched_[static_cast<std::size_t>(fragment)] != 0; }
+  // Whether the strategy gave the fragment a force in any step so far.
+  bool pushed(int fragment) const { return pushed_[static_cast<std::size_t>(fragment)] != 0; }
 
  private:
   // Whether the piece met the near rectangle between the two snapshots (ea, eb: its sweep ends).
@@ -60,6 +64,7 @@ class ExitMetric final : public RunObserver {
   std::vector<Exit> last_exit_;
   std::vector<char> passed_close_;
   std::vector<char> touched_;
+  std::vector<char> pushed_;
 };
 
 }  // namespace fragsim

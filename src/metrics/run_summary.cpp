@@ -85,6 +85,12 @@ const std::vector<SummaryField>& summary_field_table() {
       {"depth_step_m", &RunSummary::depth_step_m},
       // Last, so the columns before it keep their places.
       {"deferred", &RunSummary::deferred},
+      {"pushed_exits_top", &RunSummary::pushed_exits_top},
+      {"pushed_exits_bottom", &RunSummary::pushed_exits_bottom},
+      {"pushed_exits_left", &RunSummary::pushed_exits_left},
+      {"pushed_exits_right", &RunSummary::pushed_exits_right},
+      {"pushed_exits_near", &RunSummary::pushed_exits_near},
+      {"pushed_exits_stayed", &RunSummary::pushed_exits_stayed},
   };
   return cols;
 }

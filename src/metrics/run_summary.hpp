@@ -68,6 +68,15 @@ struct RunSummary {
   double strategy_ms_median = 0.0;
   double strategy_ms_p95 = 0.0;
   double wall_s = 0.0;
+
+  // The exits of the pushed fragments only (those that got any force; exit_metric): where a push
+  // sent them. A pushed fragment never on screen is in none of these.
+  int pushed_exits_top = 0;
+  int pushed_exits_bottom = 0;
+  int pushed_exits_left = 0;
+  int pushed_exits_right = 0;
+  int pushed_exits_near = 0;
+  int pushed_exits_stayed = 0;
 };
 
 // summary.csv's columns in order: each one's header and the RunSummary field it holds. The one

@@ -1,6 +1,8 @@
 #pragma once
 // `edge-min`'s parameters (METHOD.md section 4) and their scene keys ([edge-min]).
 
+#include <array>
+
 #include "strategies/param_spec.hpp"
 
 namespace fragsim {
@@ -30,7 +32,27 @@ struct EdgeMinParams {
   // exactly in one step, the most urgent first (time to arrival, distance over closing speed);
   // the rest keep the force of the last step they were solved. 0: no cap.
   int max_solves = 0;
+  // The director's say in the exits (docs/visibility.md, section 2): a weight per screen edge,
+  // top, bottom, left, right; of the ways out a push may take, the one of least push divided by
+  // its weight wins, and a weight of 0 forbids that edge. 1 1 1 1: the least push, as before.
+  std::array<double, 4> edge_weights{1.0, 1.0, 1.0, 1.0};
+  // The occlusion bound (docs/visibility.md, section 1): the share of the central region (the
+  // middle cover_region of the screen's width and height, as metrics.central_share measures it)
+  // that debris is predicted to cover at any sampled step within cover_horizon_s may
+  // not exceed cover_max; the fragments covering most are pushed out of the region, the least
+  // push each, until it does not. 1: off (no prediction at all, the push above alone).
+  double cover_max = 1.0;
+  double cover_region = 0.5;     // share of the width and height (metrics.central_share)
+  double cover_horizon_s = 1.0;  // how far ahead coverage is predicted
+  int cover_samples = 12;        // predicted steps per doubling of the lead time
+  int cover_cells = 32;
+  // What the prediction aims under the bound by: its discs and coarse cells against the metric's
+  // boxes and pixels put the measured maximum up to 2.3 points over an exact aim on front.ini.
+  double cover_margin = 0.03;  // cells across the region's width; rows follow the aspect
 };
+
+// The edge weights as a scene value: four numbers, each finite and >= 0, not all zero.
+std::optional<std::string> edge_weights_rule(const std::array<double, 4>& w);
 
 const ParamSpec<EdgeMinParams>& edge_min_param_spec();
 

@@ -282,6 +282,35 @@ std::size_t smallest(const std::array<double, 4>& need) {
   return static_cast<std::size_t>(std::min_element(need.begin(), need.end()) - need.begin());
 }
 
+// The way out of least need over weight, among the ways of weight > 0 (at least one is). With
+// equal weights this is smallest(); the first allowed way when every allowed need is infinite.
+std::size_t chosen(const std::array<double, 4>& need, const std::array<double, 4>& weight,
+                   bool weighted) {
+  if (!weighted) return smallest(need);
+  std::size_t best = 4;
+  double best_score = kInf;
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (!(weight[k] > 0.0)) continue;
+    const double score = need[k] / weight[k];
+    if (best == 4 || score < best_score) {
+      best = k;
+      best_score = score;
+    }
+  }
+  return best;
+}
+
+// The least need among the allowed ways: whether some allowed way is still within reach.
+double least_allowed(const std::array<double, 4>& need, const std::array<double, 4>& weight,
+                     bool weighted) {
+  if (!weighted) return need[smallest(need)];
+  double least = kInf;
+  for (std::size_t k = 0; k < 4; ++k) {
+    if (weight[k] > 0.0) least = std::min(least, need[k]);
+  }
+  return least;
+}
+
 }  // namespace
 
 double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half_gy_mps2,
@@ -315,6 +344,7 @@ void EdgeMinStrategy::reset(int fragment_count) {
   last_force_N_.assign(static_cast<std::size_t>(std::max(fragment_count, 0)),
                        Eigen::Vector3d::Zero());
   r_max_hint_m_ = -1.0;
+  cover_.reset(fragment_count);
 }
 
 void EdgeMinStrategy::carry_over(std::span<const int> previous) {
@@ -494,7 +524,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     if (!clears[i] && !receding(d, w, r)) {
       nominal = nominal_push(x, y, z, slabs, own_horizon_s, ctx.dt_s);
     }
-    const std::size_t best = smallest(nominal.need);
+    const std::size_t best = chosen(nominal.need, way_weights_, weighted_);
     // Already inside the box's shadow on every side: nothing finite helps; push toward the
     // nearest way out at the cap and let the report count it if it still hits.
     const double a_nominal = !nominal.threat                     ? 0.0
@@ -537,9 +567,9 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         for (Constraint& con : cons) con.axis[k].c1 += dv;
       }
       const WorstCase wait = worst_case(cons, slabs, own_look_s, ctx.dt_s, ctx.dt_s);
-      const double a_wait = wait.threat ? wait.need[smallest(wait.need)] : 0.0;
+      const double a_wait = wait.threat ? least_allowed(wait.need, way_weights_, weighted_) : 0.0;
       if (!(a_wait <= params_.a_max_mps2)) {
-        const std::size_t wc_best = smallest(wc.need);
+        const std::size_t wc_best = chosen(wc.need, way_weights_, weighted_);
         const double a_wc =
             std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
         apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
@@ -556,9 +586,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     for (const std::int32_t i : unsettled) {
       solve(static_cast<std::size_t>(i), grown_clears[static_cast<std::size_t>(i)] != 0);
     }
-    return;
   }
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; budget && i < n; ++i) {
     if (budget && deferred_[i]) {
       if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});
       continue;
@@ -573,6 +602,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
           out.forces.size() > forces_before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
     }
   }
+  // The occlusion bound on top: its prediction includes the pushes above.
+  if (params_.cover_max < 1.0) cover_.step(ctx, params_, way_weights_, out);
 }
 
 }  // namespace fragsim

@@ -31,12 +31,14 @@
 // (a player with instant turns) leaves bounded_accel only the ball V_c t, which is reachable's
 // region: it still holds, since reachable does not depend on A at all.
 
+#include <array>
 #include <span>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include "strategies/cheap_rejection.hpp"
+#include "strategies/occlusion_bound.hpp"
 #include "strategies/strategy.hpp"
 #include "strategies/strategy_params.hpp"
 
@@ -44,7 +46,12 @@ namespace fragsim {
 
 class EdgeMinStrategy final : public Strategy {
  public:
-  explicit EdgeMinStrategy(const EdgeMinParams& params) : params_(params) {}
+  explicit EdgeMinStrategy(const EdgeMinParams& params)
+      : params_(params),
+        // The ways out in the solver's order (+up, -up, +right, -right) from top bottom left right.
+        way_weights_{params.edge_weights[0], params.edge_weights[1], params.edge_weights[3],
+                     params.edge_weights[2]},
+        weighted_(params.edge_weights != std::array<double, 4>{1.0, 1.0, 1.0, 1.0}) {}
   std::string name() const override { return "edge-min"; }
   void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
@@ -68,8 +75,14 @@ class EdgeMinStrategy final : public Strategy {
   double assumed_accel_mps2(const StepContext& ctx) const;
   double assumed_turn_radps(const StepContext& ctx) const;
 
+  // The occlusion bound's last prediction (cover_max < 1 only).
+  const OcclusionBound& occlusion_bound() const { return cover_; }
+
  private:
   EdgeMinParams params_;
+  std::array<double, 4> way_weights_;
+  bool weighted_;
+  OcclusionBound cover_;
   // Work space kept between steps; holds no state of the run (the largest radius of the last
   // step is a hint for the rejection's window: it decides how fast a step is, not its answer).
   TwoBoxClearance clearance_;

@@ -25,6 +25,7 @@ struct Script {
   std::vector<std::vector<Eigen::Vector3d>> paths_m;
   std::vector<std::vector<int>> camera_hits;  // index = step; may be shorter than the run
   std::vector<CameraPose> cameras;            // index = step; default pose where missing
+  std::vector<std::vector<int>> pushed{};     // index = step: fragments given a force then
 };
 
 FragmentState fragment_at_camera(const Eigen::Vector3d& c_m) {
@@ -43,6 +44,7 @@ ExitMetric play(const Script& script, double near_miss_m = 1.0) {
   const std::size_t snapshots = script.paths_m.front().size();
   std::vector<FragmentState> states(n);
   const std::vector<int> no_hits;
+  std::vector<AppliedForce> forces;
 
   auto snapshot = [&](std::size_t k) {
     for (std::size_t i = 0; i < n; ++i) states[i] = fragment_at_camera(script.paths_m[i][k]);
@@ -53,6 +55,11 @@ ExitMetric play(const Script& script, double near_miss_m = 1.0) {
     snap.camera_body_half_m = {0.15, 0.1, 0.15};
     snap.fragments = states;
     snap.camera_hits = k < script.camera_hits.size() ? script.camera_hits[k] : no_hits;
+    forces.clear();
+    if (k < script.pushed.size()) {
+      for (int i : script.pushed[k]) forces.push_back({i, Eigen::Vector3d(0.0, 1.0, 0.0)});
+    }
+    snap.forces = forces;
     return snap;
   };
 
@@ -253,6 +260,30 @@ TEST(ExitMetric, TetrahedronBesideTheLensIsANearMissWhereItsBoxWouldTouch) {
   const FragmentState piece = test::shaped_fragment(t, Eigen::Vector3d::Zero(), rot);
   EXPECT_EQ(run(piece), std::pair(true, false));
   EXPECT_EQ(run(test::as_box(piece)), std::pair(false, true));
+}
+
+// The exits of the pushed fragments alone: fragments 1 and 2 get a force at step 1, 3 at step 2
+// (never on screen), 0 none; so of the top, bottom and left exits only the bottom and the left
+// are the pushed fragments', and the pushed one never on screen is in no column.
+TEST(ExitMetric, PushedExitsCountOnlyFragmentsGivenAForce) {
+  Script script{{{{0, 0, 5}, {0, 4, 5}, {0, 6, 5}},      // top
+                 {{0, 0, 5}, {0, -4, 5}, {0, -6, 5}},    // bottom
+                 {{0, 0, 5}, {-6, 0, 5}, {-8, 0, 5}},    // left
+                 {{0, 0, -5}, {0, 0, -6}, {0, 0, -7}}},  // behind the eye throughout
+                {},
+                {},
+                {{}, {1, 2}, {3}}};
+  const ExitMetric m = play(script);
+  EXPECT_FALSE(m.pushed(0));
+  EXPECT_TRUE(m.pushed(1));
+  EXPECT_TRUE(m.pushed(3));
+  RunSummary s;
+  m.fill(s);
+  EXPECT_EQ(s.exits_top, 1);
+  EXPECT_EQ(s.pushed_exits_top, 0);
+  EXPECT_EQ(s.pushed_exits_bottom, 1);
+  EXPECT_EQ(s.pushed_exits_left, 1);
+  EXPECT_EQ(s.pushed_exits_right + s.pushed_exits_near + s.pushed_exits_stayed, 0);
 }
 
 }  // namespace

@@ -1,0 +1,301 @@
+#include "strategies/occlusion_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+#include <utility>
+
+#include "geometry/frustum.hpp"
+
+namespace fragsim {
+namespace {
+
+// A constant unit acceleration's displacement after t_s of semi-implicit Euler steps of dt_s
+// (EdgeMinStrategy::displacement_per_accel, repeated here so this file needs nothing above it).
+double per_accel(double t_s, double dt_s) {
+  return 0.5 * (t_s * t_s + t_s * dt_s);
+}
+
+// The radius of the disc of a box's mean projected area: the mean shadow of a convex body is a
+// quarter of its surface area, 8 (ab + bc + ca) for half extents a, b, c.
+double disc_radius_m(const Eigen::Vector3d& half_m) {
+  const double a = half_m.x();
+  const double b = half_m.y();
+  const double c = half_m.z();
+  return std::sqrt(2.0 * (a * b + b * c + c * a) / kPi);
+}
+
+}  // namespace
+
+void OcclusionBound::reset(int fragment_count) {
+  pushed_last_.assign(static_cast<std::size_t>(std::max(fragment_count, 0)), 0);
+  added_mps_.assign(static_cast<std::size_t>(std::max(fragment_count, 0)), Eigen::Vector3d::Zero());
+}
+
+int OcclusionBound::paint(int sample, const Disc& d, int delta) {
+  if (!d.present) return 0;
+  const double s = 1.0;  // the grid spans [-1, 1]^2 in units of the region's half size
+  const double cw = 2.0 * s / cols_;
+  const double rh = 2.0 * s / rows_;
+  // Cells whose centre can lie in the disc's bounding box, clamped in double before the cast.
+  const double c_lo = std::max(0.0, std::ceil((d.x - d.rx + s) / cw - 0.5));
+  const double c_hi = std::min(cols_ - 1.0, std::floor((d.x + d.rx + s) / cw - 0.5));
+  const double r_lo = std::max(0.0, std::ceil((s - (d.y + d.ry)) / rh - 0.5));
+  const double r_hi = std::min(rows_ - 1.0, std::floor((s - (d.y - d.ry)) / rh - 0.5));
+  if (!(c_lo <= c_hi) || !(r_lo <= r_hi)) return 0;
+  const std::size_t cells = static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_);
+  std::uint16_t* grid = count_.data() + static_cast<std::size_t>(sample) * cells;
+  int own = 0;
+  for (int r = static_cast<int>(r_lo); r <= static_cast<int>(r_hi); ++r) {
+    const double dy = (s - (r + 0.5) * rh - d.y) / d.ry;
+    for (int c = static_cast<int>(c_lo); c <= static_cast<int>(c_hi); ++c) {
+      const double dx = (-s + (c + 0.5) * cw - d.x) / d.rx;
+      if (dx * dx + dy * dy > 1.0) continue;
+      ++own;
+      std::uint16_t& n = grid[static_cast<std::size_t>(r) * static_cast<std::size_t>(cols_) +
+                              static_cast<std::size_t>(c)];
+      if (delta > 0) {
+        if (n == 0) ++covered_[static_cast<std::size_t>(sample)];
+        if (n < UINT16_MAX) ++n;
+      } else if (n > 0) {
+        --n;
+        if (n == 0) --covered_[static_cast<std::size_t>(sample)];
+      }
+    }
+  }
+  return own;
+}
+
+void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
+                          const std::array<double, 4>& weights, StepOutput& out) {
+  times_s_.clear();
+  before_.clear();
+  after_.clear();
+  pushed_ = 0;
+  if (!(params.cover_max < 1.0)) return;
+  const CameraPose& cam = ctx.camera;
+
+  const double dt = ctx.dt_s;
+  const std::size_t n = ctx.fragments.size();
+
+  // The sample times, as steps ahead: every step for the first 2 B, then every 2nd step for the
+  // next 2 B steps, every 4th for the next 4 B, ... (B = cover_samples), each on steps of the
+  // run that are multiples of its stride. Then a step once sampled stays sampled as it comes
+  // nearer (a multiple of 2^k is one of 2^(k-1)): the step a push was planned for is checked
+  // again on every later step, so the plan is kept rather than lost between samples.
+  const long long last_step =
+      std::max(1LL, static_cast<long long>(std::llround(params.cover_horizon_s / dt)));
+  std::vector<long long> steps;
+  const long long dense = 2LL * params.cover_samples;
+  const long long now = std::max(0, ctx.step);
+  for (long long d = 1; d <= last_step; ++d) {
+    long long stride = 1;
+    while (d >= dense * stride) stride *= 2;
+    if ((now + d) % stride == 0) steps.push_back(d);
+  }
+  const int k_samples = static_cast<int>(steps.size());
+  for (long long m : steps) times_s_.push_back(static_cast<double>(m) * dt);
+
+  cols_ = params.cover_cells;
+  rows_ = std::max(1, static_cast<int>(std::lround(cols_ / cam.aspect)));
+  const std::size_t cells = static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_);
+  count_.assign(cells * static_cast<std::size_t>(k_samples), 0);
+  covered_.assign(static_cast<std::size_t>(k_samples), 0);
+  disc_.assign(n * static_cast<std::size_t>(k_samples), Disc{});
+  own_.assign(n * static_cast<std::size_t>(k_samples), 0);
+
+  // Region half sizes per metre of depth: NDC in units of the region's half size.
+  const double s = params.cover_region;
+  const double sx = s * cam.half_width_at(1.0);
+  const double sy = s * cam.half_height_at(1.0);
+  const double near_m = cam.near_m;
+
+  // The push already given this step (edge-min's, against the camera): part of the path.
+  std::vector<int> slot(n, -1);
+  for (std::size_t k = 0; k < out.forces.size(); ++k) {
+    const int i = out.forces[k].fragment;
+    if (i >= 0 && static_cast<std::size_t>(i) < n)
+      slot[static_cast<std::size_t>(i)] = static_cast<int>(k);
+  }
+
+  // One fragment's camera-space path pieces: x(t) = d + w t + A (t^2 + t dt) / 2.
+  struct Path {
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    Eigen::Vector3d w = Eigen::Vector3d::Zero();
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    double rho = 0.0;
+    double base_accel = 0.0;
+    bool valid = false;
+  };
+  // What a push added it takes back once the fragment is behind the camera and moving away, where
+  // it cannot be seen again (the camera keeping its velocity): the sideways speed a push left
+  // would otherwise carry the fragment ever farther from its own path, which is the deviation
+  // the bound costs. At most a_max, above the camera body's back by the fragment's radius and a
+  // margin, so the braking fragment cannot touch the camera.
+  if (added_mps_.size() != n) added_mps_.assign(n, Eigen::Vector3d::Zero());
+  const double behind_m = ctx.camera_body_half_m.z() + params.margin_m;
+  const auto add_force = [&](std::size_t i, const Eigen::Vector3d& force_N) {
+    const FragmentState& f = ctx.fragments[i];
+    added_mps_[i] += force_N / f.mass_kg * dt;
+    if (slot[i] >= 0) {
+      out.forces[static_cast<std::size_t>(slot[i])].force_N += force_N;
+    } else {
+      slot[i] = static_cast<int>(out.forces.size());
+      out.forces.push_back({static_cast<int>(i), force_N});
+    }
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (added_mps_[i].isZero()) continue;
+    const FragmentState& f = ctx.fragments[i];
+    const Eigen::Vector3d d = cam.to_camera(f.position_m);
+    const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
+    if (!(d.z() < -(behind_m + f.radius_m) && w.z() < 0.0 && slot[i] < 0 && f.mass_kg > 0.0)) {
+      continue;
+    }
+    Eigen::Vector3d brake = -added_mps_[i] / dt;
+    if (brake.norm() > params.a_max_mps2) brake *= params.a_max_mps2 / brake.norm();
+    add_force(i, f.mass_kg * brake);
+    if (added_mps_[i].norm() < 1e-9) added_mps_[i].setZero();
+  }
+
+  std::vector<Path> paths(n);
+  const auto disc_at = [&](const Eigen::Vector3d& p, double rho) {
+    Disc d;
+    if (!(p.z() + rho > near_m)) return d;  // wholly behind the near plane: nothing drawn
+    const double ze = std::max(p.z(), near_m);
+    d.x = p.x() / (ze * sx);
+    d.y = p.y() / (ze * sy);
+    d.rx = rho / (ze * sx);
+    d.ry = rho / (ze * sy);
+    d.present = std::abs(d.x) - d.rx < 1.0 && std::abs(d.y) - d.ry < 1.0 && d.rx > 0.0;
+    return d;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const FragmentState& f = ctx.fragments[i];
+    Path& p = paths[i];
+    if (!f.position_m.allFinite() || !f.velocity_mps.allFinite() || !(f.mass_kg > 0.0)) continue;
+    Eigen::Vector3d accel = ctx.gravity_mps2;
+    if (slot[i] >= 0) {
+      const Eigen::Vector3d push =
+          out.forces[static_cast<std::size_t>(slot[i])].force_N / f.mass_kg;
+      accel += push;
+      p.base_accel = push.norm();
+    }
+    p.d = cam.to_camera(f.position_m);
+    p.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
+    p.a = cam.dir_to_camera(accel);
+    p.rho = disc_radius_m(f.half_extents_m);
+    p.valid = p.rho > 0.0 && p.d.allFinite() && p.a.allFinite();
+    if (!p.valid) continue;
+    for (int j = 0; j < k_samples; ++j) {
+      const double t = times_s_[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d pos = p.d + p.w * t + p.a * per_accel(t, dt);
+      const std::size_t at = i * static_cast<std::size_t>(k_samples) + static_cast<std::size_t>(j);
+      disc_[at] = disc_at(pos, p.rho);
+      own_[at] = paint(j, disc_[at], +1);
+    }
+  }
+  const double bound_cells = (params.cover_max - params.cover_margin) * static_cast<double>(cells);
+  const auto share = [&](int j) {
+    return covered_[static_cast<std::size_t>(j)] / static_cast<double>(cells);
+  };
+  const auto over = [&](int j) { return covered_[static_cast<std::size_t>(j)] > bound_cells; };
+  for (int j = 0; j < k_samples; ++j) before_.push_back(share(j));
+  const auto any_over = [&] {
+    for (int j = 0; j < k_samples; ++j) {
+      if (over(j)) return true;
+    }
+    return false;
+  };
+  if (!any_over()) {
+    after_ = before_;
+    std::fill(pushed_last_.begin(), pushed_last_.end(), 0);
+    return;
+  }
+
+  // One fragment's least push out of the region: per way, the least constant push that takes its
+  // disc out at every over-bound sample it covers that a push within a_room can still clear; of
+  // the ways, the least push over weight. {4, 0}: no way helps.
+  const auto plan = [&](std::size_t i) -> std::pair<std::size_t, double> {
+    const Path& p = paths[i];
+    const double a_room = params.a_max_mps2 - p.base_accel;
+    if (!(a_room > 0.0)) return {4, 0.0};
+    std::array<double, 4> need{};
+    std::array<bool, 4> helps{};
+    for (int j = 0; j < k_samples; ++j) {
+      const std::size_t at = i * static_cast<std::size_t>(k_samples) + static_cast<std::size_t>(j);
+      if (!over(j) || own_[at] == 0) continue;
+      const double t = times_s_[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d pos = p.d + p.w * t + p.a * per_accel(t, dt);
+      const double ze = std::max(pos.z(), near_m);
+      const std::array<double, 4> gap{sy * ze + p.rho - pos.y(), sy * ze + p.rho + pos.y(),
+                                      sx * ze + p.rho - pos.x(), sx * ze + p.rho + pos.x()};
+      const double per = per_accel(t, dt);
+      for (std::size_t k = 0; k < 4; ++k) {
+        const double a = std::max(0.0, gap[k]) / per;
+        if (!(a <= a_room)) continue;
+        need[k] = std::max(need[k], a);
+        helps[k] = true;
+      }
+    }
+    std::size_t best = 4;
+    double best_score = 0.0;
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (!helps[k] || !(weights[k] > 0.0) || !(need[k] > 0.0)) continue;
+      const double score = need[k] / weights[k];
+      if (best == 4 || score < best_score) {
+        best = k;
+        best_score = score;
+      }
+    }
+    return {best, best == 4 ? 0.0 : need[best]};
+  };
+
+  // The order fragments are taken in: those pushed last step first (a push is a plan until the
+  // fragment is out, and a plan handed from fragment to fragment every step moves many a little
+  // and clears none), then by cells covered per push.
+  if (pushed_last_.size() != n) pushed_last_.assign(n, 0);
+  std::vector<std::tuple<int, double, int>> order;  // (not pushed last, -score, fragment): total
+  for (std::size_t i = 0; i < n; ++i) {
+    int most = 0;
+    for (int j = 0; j < k_samples; ++j) {
+      const std::size_t at = i * static_cast<std::size_t>(k_samples) + static_cast<std::size_t>(j);
+      if (over(j)) most = std::max(most, own_[at]);
+    }
+    if (most == 0) continue;
+    const auto [way, need] = plan(i);
+    if (way == 4) continue;
+    const double score = most / need;
+    order.push_back({pushed_last_[i] ? 0 : 1, -score, static_cast<int>(i)});
+  }
+  std::sort(order.begin(), order.end());
+  std::fill(pushed_last_.begin(), pushed_last_.end(), 0);
+
+  const std::array<Eigen::Vector3d, 4> way_cam{Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, -1, 0),
+                                               Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(-1, 0, 0)};
+  const std::array<Eigen::Vector3d, 4> way_world{cam.up, -cam.up, cam.right, -cam.right};
+  for (const auto& [later, neg_score, fi] : order) {
+    if (!any_over()) break;
+    const auto i = static_cast<std::size_t>(fi);
+    const Path& p = paths[i];
+    const auto [best, a_push] = plan(i);
+    if (best == 4) continue;
+    // Redraw it on its pushed path.
+    const Eigen::Vector3d push_cam = a_push * way_cam[best];
+    for (int j = 0; j < k_samples; ++j) {
+      const std::size_t at = i * static_cast<std::size_t>(k_samples) + static_cast<std::size_t>(j);
+      paint(j, disc_[at], -1);
+      const double t = times_s_[static_cast<std::size_t>(j)];
+      const Eigen::Vector3d pos = p.d + p.w * t + (p.a + push_cam) * per_accel(t, dt);
+      disc_[at] = disc_at(pos, p.rho);
+      own_[at] = paint(j, disc_[at], +1);
+    }
+    ++pushed_;
+    pushed_last_[i] = 1;
+    add_force(i, ctx.fragments[i].mass_kg * a_push * way_world[best]);
+  }
+  for (int j = 0; j < k_samples; ++j) after_.push_back(share(j));
+}
+
+}  // namespace fragsim
