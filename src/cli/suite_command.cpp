@@ -10,6 +10,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
+#include "experiments/shard.hpp"
 #include "experiments/suite.hpp"
 #include "io/atomic_file.hpp"
 
@@ -56,6 +57,29 @@ void check_out(const std::string& path, bool force) {
   }
 }
 
+// --shard: the slice's runs alone, written after the slice line of the whole plan.
+int run_suite_slice(const std::map<std::string, std::string>& scenes,
+                    const std::vector<SuiteRun>& runs, const std::vector<SuiteVariant>& variants,
+                    const Shard& shard, int jobs, const std::string& out_path) {
+  const std::string plan = suite_plan_fingerprint(scenes, runs, variants);
+  const JobRange r = shard_range(runs.size(), shard);
+  const std::vector<SuiteRun> slice(runs.begin() + static_cast<std::ptrdiff_t>(r.begin),
+                                    runs.begin() + static_cast<std::ptrdiff_t>(r.end));
+  const bool progress = ::isatty(STDERR_FILENO) == 1;
+  const std::vector<SuiteOutcome> outcomes =
+      run_suite(scenes, slice, variants, jobs, [&](std::size_t done) {
+        if (progress) std::fprintf(stderr, "\rsuite: %zu/%zu runs", done, slice.size());
+      });
+  if (progress) std::fputc('\n', stderr);
+  const std::string csv = suite_csv(slice, outcomes);
+  write_file_atomically(out_path, slice_line("suite", shard, plan, runs.size(), csv) + csv);
+  std::cout << "wrote " << out_path << ": slice " << shard.index << "/" << shard.count
+            << " of plan " << plan << ", runs " << r.begin << "-" << r.end << " of " << runs.size()
+            << ", " << outcomes.size() << " rows (fragsim merge joins the " << shard.count
+            << " slices)\n";
+  return 0;
+}
+
 }  // namespace
 
 int cmd_suite(const std::vector<std::string>& args) {
@@ -83,7 +107,10 @@ int cmd_suite(const std::vector<std::string>& args) {
       "worker processes (default: the number of online CPUs)")(
       "out", po::value<std::string>()->value_name("FILE"),
       "write the tidy CSV, one row per run and strategy")("force", "overwrite an existing FILE")(
-      "help,h", "this help");
+      "shard", po::value<std::string>()->value_name("K/N"),
+      "run only slice K (from 0) of N of the runs and write it to --out with its plan's "
+      "fingerprint, no tables; `fragsim merge` joins the N slices into the file the whole suite "
+      "writes")("help,h", "this help");
   po::variables_map vm;
   try {
     const po::parsed_options parsed = po::command_line_parser(args).options(own).run();
@@ -131,6 +158,15 @@ int cmd_suite(const std::vector<std::string>& args) {
     throw UsageError(option + what);
   }
   const int jobs = jobs_option(vm);
+  std::optional<Shard> shard;
+  if (vm.count("shard")) {
+    try {
+      shard = parse_shard(vm["shard"].as<std::string>());
+    } catch (const ShardError& e) {
+      throw UsageError(std::string("--shard ") + e.what());
+    }
+    if (!vm.count("out")) throw UsageError("--shard: needs --out FILE for the slice");
+  }
   std::optional<std::string> out_path;
   if (vm.count("out")) {
     out_path = vm["out"].as<std::string>();
@@ -149,6 +185,8 @@ int cmd_suite(const std::vector<std::string>& args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError("--scene-dir " + dir + ": " + e.what());
   }
+
+  if (shard) return run_suite_slice(scenes, runs, variants, *shard, jobs, *out_path);
 
   const bool progress = ::isatty(STDERR_FILENO) == 1;
   const std::vector<SuiteOutcome> outcomes =

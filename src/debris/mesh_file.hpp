@@ -17,6 +17,11 @@ namespace fragsim {
 // a non-finite vertex, a flat or zero-volume piece (below kMinHullVolume_m3).
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3);
 
+// The same from a file's bytes already in memory: `path` gives the format (its extension), the
+// name in messages and the folder a .gltf's external buffers are looked up in.
+std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
+                                double density_kgpm3);
+
 // Each piece's hull (a grid piece's box) in the object's frame, one OBJ object `piece_<n>` per
 // piece with 17 significant digits, so the file reads back to the last bit of every vertex.
 std::string pieces_obj(const std::vector<Piece>& pieces);

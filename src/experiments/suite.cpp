@@ -9,6 +9,7 @@
 #include "experiments/evaluation.hpp"
 #include "experiments/evaluation_codec.hpp"
 #include "experiments/process_runner.hpp"
+#include "experiments/shard.hpp"
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
 #include "metrics/trajectory_record.hpp"
@@ -318,6 +319,28 @@ std::optional<SuiteRecommendation> recommend_suite(const std::vector<SuiteRow>& 
     }
   }
   return best;
+}
+
+std::string suite_plan_fingerprint(const std::map<std::string, std::string>& scenes,
+                                   const std::vector<SuiteRun>& runs,
+                                   const std::vector<SuiteVariant>& variants) {
+  PlanText t;
+  t.add("fragsim suite plan 1").add(scenes.size());
+  for (const auto& [name, text] : scenes) t.add(name).add(text);
+  t.add(runs.size());
+  for (const SuiteRun& r : runs) {
+    t.add(r.scene).add(r.distance_m).add(r.aim).add(r.toward_camera_mps).add(r.mode).add(r.seed);
+    const std::vector<SceneOverride> keys = suite_overrides(r);
+    t.add(keys.size());
+    for (const SceneOverride& o : keys) t.add(o.key).add(o.value);
+  }
+  t.add(variants.size());
+  for (const SuiteVariant& v : variants) {
+    t.add(v.label).add(v.strategy).add(v.overrides.size());
+    for (const SceneOverride& o : v.overrides) t.add(o.key).add(o.value);
+  }
+  t.add(suite_csv({}, {}));  // the column header
+  return plan_fingerprint(t.text());
 }
 
 std::string suite_csv(const std::vector<SuiteRun>& runs,

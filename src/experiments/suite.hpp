@@ -161,6 +161,12 @@ struct SuiteRecommendation {
 std::optional<SuiteRecommendation> recommend_suite(const std::vector<SuiteRow>& player,
                                                    const std::vector<SuiteRow>& all);
 
+// The fingerprint of a plan for its slices (experiments/shard.hpp): the scene files' text, every
+// run with its scene keys, every variant with its keys, and the CSV's column header.
+std::string suite_plan_fingerprint(const std::map<std::string, std::string>& scenes,
+                                   const std::vector<SuiteRun>& runs,
+                                   const std::vector<SuiteVariant>& variants);
+
 // The tidy CSV: a header and one row per run and variant, strategy_ms_median last (the only
 // column whose bytes change between runs).
 std::string suite_csv(const std::vector<SuiteRun>& runs, const std::vector<SuiteOutcome>& outcomes);

@@ -11,6 +11,7 @@
 
 #include "experiments/evaluation_codec.hpp"
 #include "experiments/process_runner.hpp"
+#include "experiments/shard.hpp"
 #include "io/number_format.hpp"
 
 namespace fragsim {
@@ -303,6 +304,28 @@ std::string describe_combination(const SweepPlan& plan,
     s += (k > 0 ? ", " : "") + plan.axes[k].key + "=" + plan.axes[k].values[value_index[k]];
   }
   return s;
+}
+
+std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns) {
+  // The scene file's path is left out: the same scene read from another folder (another node's
+  // checkout) makes the same rows.
+  PlanText t;
+  t.add("fragsim sweep plan 1").add(plan.scene_text).add(plan.base.size());
+  for (const SceneOverride& o : plan.base) t.add(o.key).add(o.value);
+  t.add(plan.axes.size());
+  for (const SweepAxis& a : plan.axes) {
+    t.add(a.key).add(a.values.size());
+    for (const std::string& v : a.values) t.add(v);
+  }
+  t.add(plan.jobs.size());
+  for (const SweepJob& j : plan.jobs) {
+    for (std::size_t i : j.value_index) t.add(i);
+    t.add(j.seed);
+  }
+  t.add(plan.strategies.size());
+  for (const std::string& n : plan.strategies) t.add(n);
+  t.add(plan.occlusion ? 1u : 0u).add(columns);
+  return plan_fingerprint(t.text());
 }
 
 std::string describe_sweep_job(const SweepPlan& plan, const SweepJob& job) {

@@ -123,6 +123,10 @@ std::vector<SceneOverride> sweep_overrides(const SweepPlan& plan,
                                            const std::vector<std::size_t>& value_index,
                                            std::uint64_t seed);
 
+// The plan's fingerprint for its slices (experiments/shard.hpp): everything that decides the rows
+// (scene text, keys, values, jobs, strategies, occlusion) and the CSV's column header `columns`.
+std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns);
+
 // "a=1, b=2": one combination of the varied values; with the seed, "a=1, b=2, seed 3".
 std::string describe_combination(const SweepPlan& plan,
                                  const std::vector<std::size_t>& value_index);
