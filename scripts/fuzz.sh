@@ -67,24 +67,21 @@ else
   echo "fuzz: ${fuzzers[*]} for ${seconds}s, side by side"
 fi
 declare -A rcs=()
-pids=()
-names=()
-# Waits for the oldest running fuzzer and records its status.
+declare -A running=()  # pid -> target
+# Waits for whichever running fuzzer ends first and records its status.
 reap() {
-  local rc=0
-  wait "${pids[0]}" || rc=$?
-  rcs["${names[0]}"]="$rc"
-  pids=("${pids[@]:1}")
-  names=("${names[@]:1}")
+  local rc=0 pid=""
+  wait -n -p pid "${!running[@]}" || rc=$?
+  rcs["${running[$pid]}"]="$rc"
+  unset "running[$pid]"
 }
 for fuzzer in "${fuzzers[@]}"; do
   [ -x "build/fuzz/tests/fuzz/${fuzzer}_fuzz" ] || { echo "fuzz: no target $fuzzer" >&2; exit 2; }
-  while [ "${#pids[@]}" -ge "$parallel" ]; do reap; done
+  while [ "${#running[@]}" -ge "$parallel" ]; do reap; done
   run "$fuzzer" &
-  pids+=($!)
-  names+=("$fuzzer")
+  running[$!]="$fuzzer"
 done
-while [ "${#pids[@]}" -gt 0 ]; do reap; done
+while [ "${#running[@]}" -gt 0 ]; do reap; done
 
 status=0
 for fuzzer in "${fuzzers[@]}"; do

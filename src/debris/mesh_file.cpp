@@ -123,7 +123,8 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
   const std::size_t stride = view.byteStride ? view.byteStride : 12;
   if (stride < 12) fail("POSITION's byteStride is below the 12 bytes of a float VEC3");
   // Every bound in subtractions of checked sizes: a file's counts and offsets are 64-bit and a
-  // product like stride * count would wrap (a fuzzed count of 1.5e18 passed the old sum check).
+  // product like stride * count would wrap (a count of 1.5e18 passed the old sum check and read
+  // past the buffer).
   const bool view_fits =
       view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset;
   const std::size_t room = view_fits && acc.byteOffset <= view.byteLength

@@ -229,9 +229,9 @@ TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
   EXPECT_NEAR((p[0].centre_m - Eigen::Vector3d(2, 2, 3)).norm(), 0.0, 1e-6);
   EXPECT_NEAR((p[0].half_extents_m - Eigen::Vector3d(2, 1, 3)).norm(), 0.0, 1e-5);
 
-  // Found by gltf_mesh_fuzz: a POSITION count whose 12-byte positions wrap 64 bits to 8 bytes
-  // (12 x 1537228672809129302 = 2^64 + 8) read past the 96-byte buffer; it is refused. So is an
-  // accessor that starts past its view's end.
+  // The seed position_count_wraps.gltf of gltf_mesh_fuzz: a POSITION count whose 12-byte positions
+  // wrap 64 bits to 8 bytes (12 x 1537228672809129302 = 2^64 + 8) read past the 96-byte buffer; it
+  // is refused. So is an accessor that starts past its view's end.
   std::string wraps = json;
   wraps.replace(wraps.find(R"("count":8)"), 9, R"("count":1537228672809129302)");
   const std::string wrapped = write("wraps.gltf", wraps);

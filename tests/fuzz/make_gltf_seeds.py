@@ -106,7 +106,7 @@ def main():
     write_glb("not_float_positions.glb",
               model(buf, base_views, [pos_accessor(0, 4, ctype=5123)],
                     [{"primitives": [prim(0)]}], [{"mesh": 0}], [{"nodes": [0]}]), buf)
-    # Found by gltf_mesh_fuzz: 12 x this count wraps to 8 in 64 bits, which passed the old bounds
+    # A finding, kept as a seed (the reader is fixed): 12 x this count wraps to 8 in 64 bits, which passed the old bounds
     # check and read past the buffer.
     write_gltf("position_count_wraps.gltf",
                model(floats(TETRA), base_views, [pos_accessor(0, 1537228672809129302)],
