@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "cli/command_line.hpp"
+#include "cli/suite_command.hpp"
+#include "cli/sweep_command.hpp"
 #include "experiments/shard.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
@@ -19,7 +21,8 @@ const char* kMergeUsage =
     "usage: fragsim merge [--force] OUT SLICE...\n"
     "Joins the slices written by `fragsim sweep --shard K/N` or `fragsim suite --shard K/N` into "
     "OUT, byte for byte the file the unsharded command writes. Refuses slices of different plans, "
-    "a slice given twice and missing slices.\n";
+    "a slice given twice and missing slices. Then prints the tables the unsharded command prints "
+    "(a suite's per mode and its recommendation; a sweep's per value when it varies one key).\n";
 
 }  // namespace
 
@@ -60,9 +63,9 @@ int cmd_merge(const std::vector<std::string>& args) {
   if (fs::exists(out, ec) && !vm.count("force")) {
     throw UsageError(out + ": exists (use --force to overwrite)");
   }
-  std::string merged;
+  std::string merged, command;
   try {
-    merged = merge_slices(slices);
+    merged = merge_slices(slices, &command);
   } catch (const ShardError& e) {
     throw UsageError(e.what());
   }
@@ -71,6 +74,14 @@ int cmd_merge(const std::vector<std::string>& args) {
   for (char c : merged) rows += c == '\n';
   std::cout << "wrote " << out << ": " << (rows > 0 ? rows - 1 : 0) << " rows from "
             << slices.size() << " slices\n";
+  // The tables the unsharded command prints, from the merged rows.
+  if (command == "suite") {
+    const SuiteTable t = read_suite_csv(merged);
+    std::cout << "\n";
+    print_suite_tables(t.runs, t.outcomes, t.variants, std::cout);
+  } else {
+    print_sweep_tables(merged, std::cout);
+  }
   return 0;
 }
 

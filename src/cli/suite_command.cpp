@@ -82,6 +82,45 @@ int run_suite_slice(const std::map<std::string, std::string>& scenes,
 
 }  // namespace
 
+void print_suite_tables(const std::vector<SuiteRun>& runs,
+                        const std::vector<SuiteOutcome>& outcomes, std::size_t variants,
+                        std::ostream& out) {
+  out << "suite: " << runs.size() << " runs, " << variants
+      << " strategy rows each (none first, the deviation reference)\n";
+  for (const SuiteMode& mode : suite_modes()) {
+    const auto in_mode = [&](std::size_t r) { return runs[r].mode == mode.name; };
+    const std::vector<SuiteRow> rows = aggregate_suite(outcomes, in_mode);
+    if (rows.empty()) continue;
+    std::vector<std::string> keys;
+    for (const SceneOverride& o : mode.overrides) keys.push_back(o.key + " = " + o.value);
+    out << "\nmode " << mode.name << " (" << join(keys, ", ") << "): " << rows.front().runs
+        << " runs\n";
+    print_rows(rows, out);
+  }
+  out << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
+         "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
+         "misses over none's, summed over the runs; strat_ms: median over runs of the "
+         "median strategy ms per step.\n";
+  const std::vector<SuiteRow> player =
+      aggregate_suite(outcomes, [&](std::size_t r) { return is_player_mode(runs[r].mode); });
+  const std::vector<SuiteRow> all = aggregate_suite(outcomes);
+  const std::optional<SuiteRecommendation> best = recommend_suite(player, all);
+  out << "most robust (highest clean share over the player runs, then over all runs, then "
+         "least mean deviation): ";
+  if (best) {
+    out << best->variant << " (";
+    if (best->player_clean_share) {
+      out << "clean in " << percent(*best->player_clean_share) << "% of player runs, ";
+    } else {
+      out << "no player run selected; clean in ";
+    }
+    out << percent(best->all_clean_share) << "% of all runs, mean deviation "
+        << fixed(best->deviation_mean_m, 4) << " m)\n";
+  } else {
+    out << "-\n";
+  }
+}
+
 int cmd_suite(const std::vector<std::string>& args) {
   std::string mode_names, scene_names;
   for (const SuiteMode& m : suite_modes()) mode_names += (mode_names.empty() ? "" : ",") + m.name;
@@ -195,40 +234,7 @@ int cmd_suite(const std::vector<std::string>& args) {
       });
   if (progress) std::fputc('\n', stderr);
 
-  std::cout << "suite: " << runs.size() << " runs, " << variants.size()
-            << " strategy rows each (none first, the deviation reference)\n";
-  for (const SuiteMode& mode : suite_modes()) {
-    const auto in_mode = [&](std::size_t r) { return runs[r].mode == mode.name; };
-    const std::vector<SuiteRow> rows = aggregate_suite(outcomes, in_mode);
-    if (rows.empty()) continue;
-    std::vector<std::string> keys;
-    for (const SceneOverride& o : mode.overrides) keys.push_back(o.key + " = " + o.value);
-    std::cout << "\nmode " << mode.name << " (" << join(keys, ", ") << "): " << rows.front().runs
-              << " runs\n";
-    print_rows(rows, std::cout);
-  }
-  std::cout << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
-               "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
-               "misses over none's, summed over the runs; strat_ms: median over runs of the "
-               "median strategy ms per step.\n";
-  const std::vector<SuiteRow> player =
-      aggregate_suite(outcomes, [&](std::size_t r) { return is_player_mode(runs[r].mode); });
-  const std::vector<SuiteRow> all = aggregate_suite(outcomes);
-  const std::optional<SuiteRecommendation> best = recommend_suite(player, all);
-  std::cout << "most robust (highest clean share over the player runs, then over all runs, then "
-               "least mean deviation): ";
-  if (best) {
-    std::cout << best->variant << " (";
-    if (best->player_clean_share) {
-      std::cout << "clean in " << percent(*best->player_clean_share) << "% of player runs, ";
-    } else {
-      std::cout << "no player run selected; clean in ";
-    }
-    std::cout << percent(best->all_clean_share) << "% of all runs, mean deviation "
-              << fixed(best->deviation_mean_m, 4) << " m)\n";
-  } else {
-    std::cout << "-\n";
-  }
+  print_suite_tables(runs, outcomes, variants.size(), std::cout);
   if (out_path) {
     write_file_atomically(*out_path, suite_csv(runs, outcomes));
     std::cout << "wrote " << *out_path << ": " << outcomes.size() << " rows (" << runs.size()

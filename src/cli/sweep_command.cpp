@@ -231,12 +231,13 @@ void show_progress(std::size_t done, std::size_t total) {
 
 // ---- The single-key summary. ----
 
-void print_single_key_tables(const SweepPlan& plan, const std::string& csv, std::ostream& out) {
-  const std::string& key = plan.axes.front().key;
+void print_single_key_tables(const std::string& key, const std::string& csv, std::ostream& out) {
   const std::vector<SweepOutcome> rows = read_sweep_outcomes(csv, key);
   const std::vector<SweepStrategyStats> stats = summarise_single_key(rows);
   const bool numeric = sweep_values_numeric(rows);
-  const std::size_t seeds = plan.jobs.size() / plan.axes.front().values.size();
+  std::set<std::uint64_t> distinct_seeds;
+  for (const SweepOutcome& o : rows) distinct_seeds.insert(o.seed);
+  const std::size_t seeds = distinct_seeds.size();
   for (const SweepStrategyStats& st : stats) {
     out << "\n"
         << st.strategy << ": seeds with zero intersections (near-plane and camera) out of " << seeds
@@ -340,8 +341,16 @@ int cmd_sweep(const std::vector<std::string>& args) {
   std::cout << "wrote " << command.out << ": " << plan.jobs.size() * plan.strategies.size()
             << " rows (" << plan.jobs.size() << " runs x " << plan.strategies.size()
             << " strategies)\n";
-  if (plan.axes.size() == 1) print_single_key_tables(plan, csv, std::cout);
+  if (plan.axes.size() == 1) print_single_key_tables(plan.axes.front().key, csv, std::cout);
   return 0;
+}
+
+void print_sweep_tables(const std::string& csv, std::ostream& out) {
+  // The varied keys are the columns before `seed`; the tables are for one.
+  const std::string header = csv.substr(0, csv.find('\n'));
+  const std::size_t seed = header.find(",seed,");
+  if (seed == std::string::npos || header.find(',') != seed) return;
+  print_single_key_tables(header.substr(0, seed), csv, out);
 }
 
 }  // namespace fragsim::cli

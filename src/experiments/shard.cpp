@@ -147,7 +147,7 @@ std::string slice_line(const std::string& command, const Shard& shard, const std
          std::to_string(total_jobs) + " rows=" + std::to_string(lines > 0 ? lines - 1 : 0) + "\n";
 }
 
-std::string merge_slices(const std::vector<SliceFile>& files) {
+std::string merge_slices(const std::vector<SliceFile>& files, std::string* command) {
   if (files.empty()) throw ShardError("no slice files given");
   struct Slice {
     const SliceFile* file;
@@ -226,6 +226,7 @@ std::string merge_slices(const std::vector<SliceFile>& files) {
   }
   std::string out = first.columns;
   for (const auto& [k, s] : by_index) out += s->rows;
+  if (command) *command = first.header.command;
   return out;
 }
 

@@ -80,7 +80,7 @@ struct SliceFile {
 // The merged CSV: the column header once, then every slice's rows in K order. Throws ShardError,
 // one line naming the file (and line) at fault: no or a malformed slice line, slices of different
 // commands, plans or numbers of slices, a slice given twice, slices missing, a column header or a
-// row count that disagrees with the slice line.
-std::string merge_slices(const std::vector<SliceFile>& files);
+// row count that disagrees with the slice line. `command`, if given, gets the slices' command.
+std::string merge_slices(const std::vector<SliceFile>& files, std::string* command = nullptr);
 
 }  // namespace fragsim

@@ -361,4 +361,48 @@ std::string suite_csv(const std::vector<SuiteRun>& runs,
   return csv;
 }
 
+SuiteTable read_suite_csv(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  const std::string header = suite_csv({}, {});
+  if (!std::getline(in, line) || line + "\n" != header) {
+    throw std::runtime_error("line 1: not the suite CSV's header");
+  }
+  SuiteTable t;
+  int number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    std::string cell;
+    while (std::getline(row, cell, ',')) cells.push_back(cell);
+    if (cells.size() != 12) {
+      throw std::runtime_error("line " + std::to_string(number) + ": expected 12 cells");
+    }
+    SuiteRun r{cells[0], cells[1], cells[2], cells[3], cells[5], 0};
+    SuiteOutcome o;
+    try {
+      r.seed = std::stoull(cells[4]);
+      o.near_fragments = std::stoi(cells[7]);
+      o.camera_hits = std::stoi(cells[8]);
+      o.deviation_mean_m = std::stod(cells[9]);
+      o.near_misses = std::stoi(cells[10]);
+      o.strategy_ms_median = std::stod(cells[11]);
+    } catch (const std::logic_error&) {
+      throw std::runtime_error("line " + std::to_string(number) + ": unreadable number");
+    }
+    o.variant = cells[6];
+    // A run's rows are consecutive: a new run starts where the run's fields change.
+    const bool same = !t.runs.empty() && t.runs.back().scene == r.scene &&
+                      t.runs.back().distance_m == r.distance_m && t.runs.back().aim == r.aim &&
+                      t.runs.back().toward_camera_mps == r.toward_camera_mps &&
+                      t.runs.back().mode == r.mode && t.runs.back().seed == r.seed;
+    if (!same) t.runs.push_back(r);
+    o.run = t.runs.size() - 1;
+    t.outcomes.push_back(std::move(o));
+  }
+  if (!t.runs.empty()) t.variants = t.outcomes.size() / t.runs.size();
+  return t;
+}
+
 }  // namespace fragsim

@@ -171,4 +171,15 @@ std::string suite_plan_fingerprint(const std::map<std::string, std::string>& sce
 // column whose bytes change between runs).
 std::string suite_csv(const std::vector<SuiteRun>& runs, const std::vector<SuiteOutcome>& outcomes);
 
+// A suite CSV read back (a merged one: `fragsim merge` prints its tables): the runs in file order,
+// each starting where a row's run fields (scene, distance, aim, speed, seed, mode) change, and
+// the outcomes with their run index. Throws std::runtime_error naming the line: not the suite's
+// header, a row without 12 cells, an unreadable number.
+struct SuiteTable {
+  std::vector<SuiteRun> runs;
+  std::vector<SuiteOutcome> outcomes;
+  std::size_t variants = 0;  // rows per run
+};
+SuiteTable read_suite_csv(const std::string& csv);
+
 }  // namespace fragsim

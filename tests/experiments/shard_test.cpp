@@ -194,6 +194,9 @@ TEST(ShardCommand, MergedSweepSlicesAreTheUnshardedFileByteForByte) {
     EXPECT_EQ(read_file(out), expected);
     EXPECT_NE(m.out.find("12 rows from " + std::to_string(n) + " slices"), std::string::npos)
         << m.out;
+    // The per-value tables of a one-key sweep, as the unsharded command printed them.
+    const std::string tables = whole.out.substr(whole.out.find("\nnone: seeds"));
+    EXPECT_NE(m.out.find(tables), std::string::npos) << m.out << "\n---\n" << whole.out;
   }
   // A slice is its jobs' rows of the whole file after the slice line: 6 jobs in 4 are 1,2,1,2.
   const std::string s1 = read_file(dir.str() + "/shard_1_of_4.csv");
@@ -272,6 +275,48 @@ std::string without_timing(const std::string& csv) {
   return out;
 }
 
+// Printed tables without each line's last word (strat_ms in a table row).
+std::string without_timing_words(const std::string& text) {
+  std::istringstream in(text);
+  std::string out, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("wrote ", 0) == 0) continue;
+    out += line.substr(0, line.rfind(' ')) + "\n";
+  }
+  return out;
+}
+
+TEST(SuiteCsvRead, ReadsBackTheRunsAndOutcomesSuiteCsvWrote) {
+  const std::vector<SuiteRun> runs = {{"front", "6", "future", "10", "path", 1},
+                                      {"front", "6", "future", "10", "path", 2},
+                                      {"close", "1.5", "present", "9", "player", 2}};
+  std::vector<SuiteOutcome> outcomes;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    for (const char* v : {"none", "edge"}) {
+      SuiteOutcome o;
+      o.run = r;
+      o.variant = v;
+      o.near_fragments = static_cast<int>(r);
+      o.camera_hits = 1;
+      o.deviation_mean_m = 0.1 * static_cast<double>(r) + 1e-17;
+      o.near_misses = 7;
+      o.strategy_ms_median = 0.003;
+      outcomes.push_back(o);
+    }
+  }
+  const std::string csv = suite_csv(runs, outcomes);
+  const SuiteTable t = read_suite_csv(csv);
+  ASSERT_EQ(t.runs.size(), 3u);
+  EXPECT_EQ(t.variants, 2u);
+  EXPECT_EQ(t.runs[2].scene, "close");
+  EXPECT_EQ(t.runs[1].seed, 2u);
+  ASSERT_EQ(t.outcomes.size(), 6u);
+  EXPECT_EQ(t.outcomes[5].run, 2u);
+  EXPECT_EQ(suite_csv(t.runs, t.outcomes), csv);  // every number back to its last bit
+  EXPECT_THROW(read_suite_csv("a,b\n"), std::runtime_error);
+  EXPECT_THROW(read_suite_csv(csv + "front,6\n"), std::runtime_error);
+}
+
 TEST(ShardCommand, MergedSuiteSlicesAreTheUnshardedFileButForTheTimingColumn) {
   const test::UniqueDir dir("fragsim_shard_suite");
   // 3 runs: thesis125 at 4 m, aim future, three speeds, path camera, seed 1.
@@ -290,6 +335,13 @@ TEST(ShardCommand, MergedSuiteSlicesAreTheUnshardedFileButForTheTimingColumn) {
     const std::string merged = read_file(out);
     EXPECT_EQ(lines(merged), lines(expected));
     EXPECT_EQ(without_timing(merged), without_timing(expected));
+    // The tables and the recommendation, as the unsharded command printed them but for the
+    // timing column (each table line's last number).
+    const auto tables = [](const std::string& out) {
+      return without_timing_words(out.substr(out.find("suite: ")));
+    };
+    EXPECT_EQ(tables(m.out), tables(whole.out)) << m.out;
+    EXPECT_NE(m.out.find("most robust"), std::string::npos) << m.out;
   }
   // A suite slice does not merge with a sweep slice.
   std::filesystem::create_directory(dir.path() / "sweep");
