@@ -250,6 +250,14 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
   std::vector<Piece> out;
   out.reserve(raw.size());
   for (std::size_t i = 0; i < raw.size(); ++i) {
+    // Beyond the scene's own reach (object.distance_m <= 1e6 m) a hull loses its small features
+    // to rounding: a fuzzed tetrahedron at 1e31 m had volume 2e77 m^3 read, -8e74 written back.
+    for (const Eigen::Vector3d& v : raw[i].points_m) {
+      if (v.allFinite() && v.cwiseAbs().maxCoeff() > kMaxMeshCoordinate_m) {
+        throw InputError(path + ": piece " + std::to_string(i + 1) + " ('" + raw[i].name +
+                         "'): a vertex lies farther than 1e6 m from the file's origin");
+      }
+    }
     try {
       const HullPiece h = convex_hull(raw[i].points_m);
       Piece p;

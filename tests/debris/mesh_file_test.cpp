@@ -173,6 +173,11 @@ TEST_F(MeshFile, EachBadInputIsOneLineNamingFileAndPiece) {
   const std::string too_many = write("many.obj", many);
   expect_line(error_of(too_many), too_many, "more than 20000 pieces");
 
+  // gltf_mesh_fuzz's seed vertices_at_1e31.glb: a hull that far out is rounding, not a piece.
+  const std::string far =
+      write("far.obj", "o Away\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.5e6\nf 1 2 3\nf 1 2 4\n");
+  expect_line(error_of(far), far, "piece 1 ('Away'): a vertex lies farther than 1e6 m");
+
   const std::string stl = write("piece.stl", "solid\n");
   expect_line(error_of(stl), stl, "unknown mesh format");
 
