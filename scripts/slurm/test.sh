@@ -106,6 +106,7 @@ done
 up_s="$(date +%s)"
 
 # The sweep: 3 distances x 4 seeds = 12 jobs of thesis125 cut short, three strategies.
+# shellcheck disable=SC2054  # the commas are fragsim's lists, not array separators
 args=(sweep --scene "$repo/data/scenes/thesis125.ini" --object.splits 3
       --simulation.duration_s 0.5 --vary object.distance_m=3,5,7 --seeds 4
       --strategies none,edge,edge-min)
@@ -127,7 +128,8 @@ for _ in $(seq 600); do
 done
 [ "$st" = COMPLETED ] || { echo "slurm test: merge job $merge not done (state '$st')" >&2; exit 1; }
 done_s="$(date +%s)"
-tasks="$(ls "$tmp/work/sweep.csv.slices"/shard_*.csv | wc -l)"
+slices=("$tmp/work/sweep.csv.slices"/shard_*.csv)
+tasks="${#slices[@]}"
 [ "$tasks" -eq 4 ] || { echo "slurm test: $tasks slices, expected 4" >&2; exit 1; }
 
 "$fragsim" "${args[@]}" --jobs 1 --out "$tmp/work/local.csv" >/dev/null
