@@ -301,6 +301,7 @@ int cmd_sweep(const std::vector<std::string>& args) {
     const JobRange r = shard_range(command.sweep.jobs.size(), *command.shard);
     sliced.jobs.assign(command.sweep.jobs.begin() + static_cast<std::ptrdiff_t>(r.begin),
                        command.sweep.jobs.begin() + static_cast<std::ptrdiff_t>(r.end));
+    sliced.first_job = r.begin;
     slice_head = plan_id;
   }
   const SweepPlan& plan = command.shard ? sliced : command.sweep;

@@ -338,7 +338,8 @@ std::vector<std::vector<Evaluation>> run_sweep(
   options.jobs = jobs;
   if (on_done) options.on_done = [&on_done](std::size_t, std::size_t done) { on_done(done); };
   options.describe = [&plan](std::size_t j) {
-    return "job " + std::to_string(j + 1) + " (" + describe_sweep_job(plan, plan.jobs[j]) + ")";
+    return "job " + std::to_string(plan.first_job + j + 1) + " (" +
+           describe_sweep_job(plan, plan.jobs[j]) + ")";
   };
   const std::vector<std::string> encoded = run_in_processes(
       plan.jobs.size(),
@@ -361,7 +362,7 @@ std::vector<std::vector<Evaluation>> run_sweep(
   for (std::size_t j = 0; j < encoded.size(); ++j) {
     out.push_back(decode_evaluations(encoded[j]));
     if (out.back().size() != plan.strategies.size()) {
-      throw std::runtime_error("job " + std::to_string(j + 1) + " (" +
+      throw std::runtime_error("job " + std::to_string(plan.first_job + j + 1) + " (" +
                                describe_sweep_job(plan, plan.jobs[j]) +
                                "): strategies missing in the worker's result");
     }

@@ -116,6 +116,8 @@ struct SweepPlan {
   std::vector<SweepJob> jobs;           // in output order
   std::vector<std::string> strategies;  // in --strategies order
   bool occlusion = true;
+  // A slice's first job in the whole plan (--shard), so messages number jobs as the whole does.
+  std::size_t first_job = 0;
 };
 
 // A job's scene keys: the base options, one value per axis, the seed.

@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "experiments/suite.hpp"
@@ -264,6 +266,32 @@ TEST(ShardCommand, BadShardIsOneLineNamingTheOption) {
   const Result no_out = run_fragsim("suite --shard 0/2");
   EXPECT_EQ(no_out.status, 2);
   EXPECT_NE(no_out.out.find("--shard: needs --out"), std::string::npos) << no_out.out;
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(ShardCommand, AFailingJobIsNamedByItsNumberInTheWholePlan) {
+  // 5 jobs of 60 steps; slice 1/2 holds jobs 3, 4 and 5. On 2 workers, worker 0 runs jobs 3 and
+  // 5, so its step 100 (sim/simulation.hpp's test signal) falls in job 5, where it kills itself.
+  const test::UniqueDir dir("fragsim_shard_crash");
+  for (const auto& [name, value] :
+       {std::pair<const char*, const char*>{"FRAGSIM_TEST_RAISE_AT_STEP", "100"},
+        {"FRAGSIM_TEST_RAISE_SIGNAL", "KILL"},
+        {"FRAGSIM_TEST_RAISE_IN", "self"}}) {
+    ::setenv(name, value, 1);
+  }
+  const Result r = run_fragsim("sweep --scene " + std::string(FRAGSIM_DATA_DIR) +
+                               "/scenes/thesis125.ini --object.splits 2 --simulation.duration_s "
+                               "0.5 --vary object.distance_m=3,5,7,9,11 --strategies none,edge "
+                               "--jobs 2 --shard 1/2 --out " +
+                               dir.str() + "/x.csv");
+  for (const char* name :
+       {"FRAGSIM_TEST_RAISE_AT_STEP", "FRAGSIM_TEST_RAISE_SIGNAL", "FRAGSIM_TEST_RAISE_IN"}) {
+    ::unsetenv(name);
+  }
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_EQ(r.out,
+            "fragsim sweep: job 5 (object.distance_m=11, seed 1): the worker process was killed "
+            "by signal 9 (Killed)\n");
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
