@@ -60,7 +60,7 @@ void HealthObserver::begin(const RunInfo& info, const StepSnapshot& initial) {
   // The wall rides with the camera: a path camera moves at speed_mps, a player or a track at up
   // to V_c (speed_mps is not theirs).
   const CameraDef& cam = scene_->camera;
-  wall_speed_mps_ = info.strategy != "wall"            ? 0.0
+  wall_speed_mps_ = info.strategy != "wall"         ? 0.0
                     : cam.mode == CameraMode::kPath ? cam.speed_mps
                                                     : std::max(cam.speed_mps, cam.max_speed_mps);
 
