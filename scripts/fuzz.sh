@@ -23,7 +23,7 @@ while [ "$#" -gt 0 ]; do
     --parallel) parallel="$2"; shift 2 ;;
     --only) IFS=, read -r -a fuzzers <<<"$2"; shift 2 ;;
     --keep) keep="$2"; shift 2 ;;
-    -h | --help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,12p' "$0"; exit 0 ;;
     *) seconds="$1"; shift ;;
   esac
 done

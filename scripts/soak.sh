@@ -34,7 +34,7 @@ while [ "$#" -gt 0 ]; do
     --no-stress) stress=0; shift ;;
     --no-fuzz) fuzz=0; shift ;;
     --out) out="$2"; shift 2 ;;
-    -h | --help) sed -n '2,17p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "soak: unknown argument '$1' (--help)" >&2; exit 2 ;;
   esac
 done
