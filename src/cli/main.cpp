@@ -12,6 +12,7 @@
 #include "cli/bench_command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/fracture_command.hpp"
+#include "cli/merge_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
 #include "cli/suite_command.hpp"
@@ -42,6 +43,7 @@ const char* kUsage =
     "  compare  every strategy on the same scene and seed\n"
     "  sweep    scene keys over values and seeds, every combination compared, one CSV file\n"
     "  suite    every strategy on a fixed battery of scenes, seeds and camera modes: a verdict\n"
+    "  merge    join the slices of a sweep or suite run with --shard K/N into one CSV file\n"
     "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
     "  bench    run time against error: step sizes, solvers, predictors, skips vs a reference\n"
     "  fracture the pieces a scene's object breaks into, as a .glb or .obj file\n"
@@ -211,6 +213,7 @@ int main(int argc, char** argv) {
     if (command == "compare") return cmd_compare(args);
     if (command == "sweep") return cli::cmd_sweep(args);
     if (command == "suite") return cli::cmd_suite(args);
+    if (command == "merge") return cli::cmd_merge(args);
     if (command == "render") return cli::cmd_render(args);
     if (command == "bench") return cli::cmd_bench(args);
     if (command == "fracture") return cli::cmd_fracture(args);

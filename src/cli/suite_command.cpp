@@ -10,6 +10,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
+#include "experiments/shard.hpp"
 #include "experiments/suite.hpp"
 #include "io/atomic_file.hpp"
 
@@ -56,7 +57,69 @@ void check_out(const std::string& path, bool force) {
   }
 }
 
+// --shard: the slice's runs alone, written after the slice line of the whole plan.
+int run_suite_slice(const std::map<std::string, std::string>& scenes,
+                    const std::vector<SuiteRun>& runs, const std::vector<SuiteVariant>& variants,
+                    const Shard& shard, int jobs, const std::string& out_path) {
+  const std::string plan = suite_plan_fingerprint(scenes, runs, variants);
+  const JobRange r = shard_range(runs.size(), shard);
+  const std::vector<SuiteRun> slice(runs.begin() + static_cast<std::ptrdiff_t>(r.begin),
+                                    runs.begin() + static_cast<std::ptrdiff_t>(r.end));
+  const bool progress = ::isatty(STDERR_FILENO) == 1;
+  const std::vector<SuiteOutcome> outcomes =
+      run_suite(scenes, slice, variants, jobs, [&](std::size_t done) {
+        if (progress) std::fprintf(stderr, "\rsuite: %zu/%zu runs", done, slice.size());
+      });
+  if (progress) std::fputc('\n', stderr);
+  const std::string csv = suite_csv(slice, outcomes);
+  write_file_atomically(out_path, slice_line("suite", shard, plan, runs.size(), csv) + csv);
+  std::cout << "wrote " << out_path << ": slice " << shard.index << "/" << shard.count
+            << " of plan " << plan << ", runs " << r.begin << "-" << r.end << " of " << runs.size()
+            << ", " << outcomes.size() << " rows (fragsim merge joins the " << shard.count
+            << " slices)\n";
+  return 0;
+}
+
 }  // namespace
+
+void print_suite_tables(const std::vector<SuiteRun>& runs,
+                        const std::vector<SuiteOutcome>& outcomes, std::size_t variants,
+                        std::ostream& out) {
+  out << "suite: " << runs.size() << " runs, " << variants
+      << " strategy rows each (none first, the deviation reference)\n";
+  for (const SuiteMode& mode : suite_modes()) {
+    const auto in_mode = [&](std::size_t r) { return runs[r].mode == mode.name; };
+    const std::vector<SuiteRow> rows = aggregate_suite(outcomes, in_mode);
+    if (rows.empty()) continue;
+    std::vector<std::string> keys;
+    for (const SceneOverride& o : mode.overrides) keys.push_back(o.key + " = " + o.value);
+    out << "\nmode " << mode.name << " (" << join(keys, ", ") << "): " << rows.front().runs
+        << " runs\n";
+    print_rows(rows, out);
+  }
+  out << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
+         "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
+         "misses over none's, summed over the runs; strat_ms: median over runs of the "
+         "median strategy ms per step.\n";
+  const std::vector<SuiteRow> player =
+      aggregate_suite(outcomes, [&](std::size_t r) { return is_player_mode(runs[r].mode); });
+  const std::vector<SuiteRow> all = aggregate_suite(outcomes);
+  const std::optional<SuiteRecommendation> best = recommend_suite(player, all);
+  out << "most robust (highest clean share over the player runs, then over all runs, then "
+         "least mean deviation): ";
+  if (best) {
+    out << best->variant << " (";
+    if (best->player_clean_share) {
+      out << "clean in " << percent(*best->player_clean_share) << "% of player runs, ";
+    } else {
+      out << "no player run selected; clean in ";
+    }
+    out << percent(best->all_clean_share) << "% of all runs, mean deviation "
+        << fixed(best->deviation_mean_m, 4) << " m)\n";
+  } else {
+    out << "-\n";
+  }
+}
 
 int cmd_suite(const std::vector<std::string>& args) {
   std::string mode_names, scene_names;
@@ -83,7 +146,10 @@ int cmd_suite(const std::vector<std::string>& args) {
       "worker processes (default: the number of online CPUs)")(
       "out", po::value<std::string>()->value_name("FILE"),
       "write the tidy CSV, one row per run and strategy")("force", "overwrite an existing FILE")(
-      "help,h", "this help");
+      "shard", po::value<std::string>()->value_name("K/N"),
+      "run only slice K (from 0) of N of the runs and write it to --out with its plan's "
+      "fingerprint, no tables; `fragsim merge` joins the N slices into the file the whole suite "
+      "writes")("help,h", "this help");
   po::variables_map vm;
   try {
     const po::parsed_options parsed = po::command_line_parser(args).options(own).run();
@@ -131,6 +197,15 @@ int cmd_suite(const std::vector<std::string>& args) {
     throw UsageError(option + what);
   }
   const int jobs = jobs_option(vm);
+  std::optional<Shard> shard;
+  if (vm.count("shard")) {
+    try {
+      shard = parse_shard(vm["shard"].as<std::string>());
+    } catch (const ShardError& e) {
+      throw UsageError(std::string("--shard ") + e.what());
+    }
+    if (!vm.count("out")) throw UsageError("--shard: needs --out FILE for the slice");
+  }
   std::optional<std::string> out_path;
   if (vm.count("out")) {
     out_path = vm["out"].as<std::string>();
@@ -150,6 +225,8 @@ int cmd_suite(const std::vector<std::string>& args) {
     throw UsageError("--scene-dir " + dir + ": " + e.what());
   }
 
+  if (shard) return run_suite_slice(scenes, runs, variants, *shard, jobs, *out_path);
+
   const bool progress = ::isatty(STDERR_FILENO) == 1;
   const std::vector<SuiteOutcome> outcomes =
       run_suite(scenes, runs, variants, jobs, [&](std::size_t done) {
@@ -157,40 +234,7 @@ int cmd_suite(const std::vector<std::string>& args) {
       });
   if (progress) std::fputc('\n', stderr);
 
-  std::cout << "suite: " << runs.size() << " runs, " << variants.size()
-            << " strategy rows each (none first, the deviation reference)\n";
-  for (const SuiteMode& mode : suite_modes()) {
-    const auto in_mode = [&](std::size_t r) { return runs[r].mode == mode.name; };
-    const std::vector<SuiteRow> rows = aggregate_suite(outcomes, in_mode);
-    if (rows.empty()) continue;
-    std::vector<std::string> keys;
-    for (const SceneOverride& o : mode.overrides) keys.push_back(o.key + " = " + o.value);
-    std::cout << "\nmode " << mode.name << " (" << join(keys, ", ") << "): " << rows.front().runs
-              << " runs\n";
-    print_rows(rows, std::cout);
-  }
-  std::cout << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
-               "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
-               "misses over none's, summed over the runs; strat_ms: median over runs of the "
-               "median strategy ms per step.\n";
-  const std::vector<SuiteRow> player =
-      aggregate_suite(outcomes, [&](std::size_t r) { return is_player_mode(runs[r].mode); });
-  const std::vector<SuiteRow> all = aggregate_suite(outcomes);
-  const std::optional<SuiteRecommendation> best = recommend_suite(player, all);
-  std::cout << "most robust (highest clean share over the player runs, then over all runs, then "
-               "least mean deviation): ";
-  if (best) {
-    std::cout << best->variant << " (";
-    if (best->player_clean_share) {
-      std::cout << "clean in " << percent(*best->player_clean_share) << "% of player runs, ";
-    } else {
-      std::cout << "no player run selected; clean in ";
-    }
-    std::cout << percent(best->all_clean_share) << "% of all runs, mean deviation "
-              << fixed(best->deviation_mean_m, 4) << " m)\n";
-  } else {
-    std::cout << "-\n";
-  }
+  print_suite_tables(runs, outcomes, variants.size(), std::cout);
   if (out_path) {
     write_file_atomically(*out_path, suite_csv(runs, outcomes));
     std::cout << "wrote " << *out_path << ": " << outcomes.size() << " rows (" << runs.size()

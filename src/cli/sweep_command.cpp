@@ -5,11 +5,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "cli/command_line.hpp"
 #include "cli/table.hpp"
 #include "experiments/evaluation.hpp"
+#include "experiments/shard.hpp"
 #include "experiments/sweep.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
@@ -28,6 +30,7 @@ struct SweepCommandPlan {
   SweepPlan sweep;
   std::string out;
   int jobs = 1;
+  std::optional<Shard> shard;  // --shard K/N: only that slice of sweep.jobs
 };
 
 // SceneError messages for an override start with "--KEY: "; the caller names --vary instead.
@@ -135,6 +138,13 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
   }
 
   command.jobs = jobs_option(p.options);
+  if (p.options.count("shard")) {
+    try {
+      command.shard = parse_shard(p.options["shard"].as<std::string>());
+    } catch (const ShardError& e) {
+      throw UsageError(std::string("--shard ") + e.what());
+    }
+  }
 
   // The scene file's text, read once: every job's scene is parsed from it with its overrides.
   if (p.options.count("scene")) {
@@ -221,12 +231,13 @@ void show_progress(std::size_t done, std::size_t total) {
 
 // ---- The single-key summary. ----
 
-void print_single_key_tables(const SweepPlan& plan, const std::string& csv, std::ostream& out) {
-  const std::string& key = plan.axes.front().key;
+void print_single_key_tables(const std::string& key, const std::string& csv, std::ostream& out) {
   const std::vector<SweepOutcome> rows = read_sweep_outcomes(csv, key);
   const std::vector<SweepStrategyStats> stats = summarise_single_key(rows);
   const bool numeric = sweep_values_numeric(rows);
-  const std::size_t seeds = plan.jobs.size() / plan.axes.front().values.size();
+  std::set<std::uint64_t> distinct_seeds;
+  for (const SweepOutcome& o : rows) distinct_seeds.insert(o.seed);
+  const std::size_t seeds = distinct_seeds.size();
   for (const SweepStrategyStats& st : stats) {
     out << "\n"
         << st.strategy << ": seeds with zero intersections (near-plane and camera) out of " << seeds
@@ -272,11 +283,28 @@ int cmd_sweep(const std::vector<std::string>& args) {
       "worker processes (default: the number of online CPUs)")(
       "out", po::value<std::string>()->value_name("FILE"), "the CSV file to write")(
       "force", "overwrite an existing FILE")(
-      "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)");
+      "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
+      "shard", po::value<std::string>()->value_name("K/N"),
+      "run only slice K (from 0) of N of the jobs and write it with its plan's fingerprint; "
+      "`fragsim merge` joins the N slices into the file the whole sweep writes");
   const ParsedCommand p = parse_command("sweep", args, own);
   if (p.help_shown) return 0;
   const SweepCommandPlan command = plan_sweep(p);
-  const SweepPlan& plan = command.sweep;
+  // A slice runs its jobs alone; the fingerprint is the whole plan's, so slices of one plan match.
+  std::string slice_head;
+  SweepPlan sliced;
+  if (command.shard) {
+    std::size_t seed_column = 0;
+    const std::string plan_id =
+        sweep_plan_fingerprint(command.sweep, join(sweep_columns(command.sweep, seed_column)));
+    sliced = command.sweep;
+    const JobRange r = shard_range(command.sweep.jobs.size(), *command.shard);
+    sliced.jobs.assign(command.sweep.jobs.begin() + static_cast<std::ptrdiff_t>(r.begin),
+                       command.sweep.jobs.begin() + static_cast<std::ptrdiff_t>(r.end));
+    sliced.first_job = r.begin;
+    slice_head = plan_id;
+  }
+  const SweepPlan& plan = command.shard ? sliced : command.sweep;
   // Fails early, as a usage error, when the file cannot be written: a probe through the same
   // temporary-file-and-rename path, removed again before the workers are forked.
   try {
@@ -298,12 +326,32 @@ int cmd_sweep(const std::vector<std::string>& args) {
   }
   if (progress) std::fputc('\n', stderr);
   const std::string csv = sweep_csv(plan, results);
+  if (command.shard) {
+    write_file_atomically(
+        command.out,
+        slice_line("sweep", *command.shard, slice_head, command.sweep.jobs.size(), csv) + csv);
+    const JobRange r = shard_range(command.sweep.jobs.size(), *command.shard);
+    std::cout << "wrote " << command.out << ": slice " << command.shard->index << "/"
+              << command.shard->count << " of plan " << slice_head << ", jobs " << r.begin << "-"
+              << r.end << " of " << command.sweep.jobs.size() << ", "
+              << plan.jobs.size() * plan.strategies.size() << " rows (fragsim merge joins the "
+              << command.shard->count << " slices)\n";
+    return 0;
+  }
   write_file_atomically(command.out, csv);
   std::cout << "wrote " << command.out << ": " << plan.jobs.size() * plan.strategies.size()
             << " rows (" << plan.jobs.size() << " runs x " << plan.strategies.size()
             << " strategies)\n";
-  if (plan.axes.size() == 1) print_single_key_tables(plan, csv, std::cout);
+  if (plan.axes.size() == 1) print_single_key_tables(plan.axes.front().key, csv, std::cout);
   return 0;
+}
+
+void print_sweep_tables(const std::string& csv, std::ostream& out) {
+  // The varied keys are the columns before `seed`; the tables are for one.
+  const std::string header = csv.substr(0, csv.find('\n'));
+  const std::size_t seed = header.find(",seed,");
+  if (seed == std::string::npos || header.find(',') != seed) return;
+  print_single_key_tables(header.substr(0, seed), csv, out);
 }
 
 }  // namespace fragsim::cli

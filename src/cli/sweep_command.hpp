@@ -2,6 +2,7 @@
 // `fragsim sweep`: scene keys varied over values and seeds, each combination compared in a worker
 // process, all rows merged into one CSV in a fixed order.
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -12,5 +13,9 @@ namespace fragsim::cli {
 // exit status; throws UsageError for bad input (before any simulation runs), TaskFailed when a
 // job fails and Interrupted on a stop signal.
 int cmd_sweep(const std::vector<std::string>& args);
+
+// The per-value tables `cmd_sweep` prints when one key is varied, from a sweep CSV alone (a
+// merged one: `fragsim merge`); nothing when the CSV varies more than one key.
+void print_sweep_tables(const std::string& csv, std::ostream& out);
 
 }  // namespace fragsim::cli

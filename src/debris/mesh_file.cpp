@@ -42,8 +42,7 @@ struct RawPiece {
   std::vector<Eigen::Vector3d> points_m;
 };
 
-std::vector<RawPiece> raw_obj(const std::string& path) {
-  const std::string text = read_input_file(path, "mesh file");
+std::vector<RawPiece> raw_obj(const std::string& text, const std::string& path) {
   std::istringstream in(text);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -122,11 +121,19 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
   const std::vector<unsigned char>& data =
       model.buffers[static_cast<std::size_t>(view.buffer)].data;
   const std::size_t stride = view.byteStride ? view.byteStride : 12;
-  const std::size_t start = view.byteOffset + acc.byteOffset;
-  if (acc.count > 0 && (start + stride * (acc.count - 1) + 12 > data.size() ||
-                        acc.byteOffset + stride * (acc.count - 1) + 12 > view.byteLength)) {
+  if (stride < 12) fail("POSITION's byteStride is below the 12 bytes of a float VEC3");
+  // Every bound in subtractions of checked sizes: a file's counts and offsets are 64-bit and a
+  // product like stride * count would wrap (a count of 1.5e18 passed the old sum check and read
+  // past the buffer).
+  const bool view_fits =
+      view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset;
+  const std::size_t room = view_fits && acc.byteOffset <= view.byteLength
+                               ? view.byteLength - acc.byteOffset
+                               : 0;  // bytes from the first position to the view's end
+  if (!view_fits || (acc.count > 0 && (room < 12 || acc.count - 1 > (room - 12) / stride))) {
     fail("POSITION runs past the end of its buffer");
   }
+  const std::size_t start = view.byteOffset + acc.byteOffset;
   for (std::size_t i = 0; i < acc.count; ++i) {
     float xyz[3];
     std::memcpy(xyz, data.data() + start + i * stride, sizeof xyz);
@@ -135,8 +142,7 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
   }
 }
 
-std::vector<RawPiece> raw_gltf(const std::string& path, bool binary) {
-  const std::string bytes = read_input_file(path, "mesh file");
+std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path, bool binary) {
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
   std::string err;
@@ -220,11 +226,20 @@ void piece_polyhedron(const Piece& p, std::vector<Eigen::Vector3d>& v,
 
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3) {
   const std::string ext = extension_of(path);
+  if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
+    throw InputError(path + ": unknown mesh format '" + ext + "' (expected .obj, .gltf or .glb)");
+  }
+  return parse_pieces(read_input_file(path, "mesh file"), path, density_kgpm3);
+}
+
+std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
+                                double density_kgpm3) {
+  const std::string ext = extension_of(path);
   std::vector<RawPiece> raw;
   if (ext == ".obj") {
-    raw = raw_obj(path);
+    raw = raw_obj(bytes, path);
   } else if (ext == ".gltf" || ext == ".glb") {
-    raw = raw_gltf(path, ext == ".glb");
+    raw = raw_gltf(bytes, path, ext == ".glb");
   } else {
     throw InputError(path + ": unknown mesh format '" + ext + "' (expected .obj, .gltf or .glb)");
   }
@@ -235,6 +250,14 @@ std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3) {
   std::vector<Piece> out;
   out.reserve(raw.size());
   for (std::size_t i = 0; i < raw.size(); ++i) {
+    // Beyond the scene's own reach (object.distance_m <= 1e6 m) a hull loses its small features
+    // to rounding: a fuzzed tetrahedron at 1e31 m had volume 2e77 m^3 read, -8e74 written back.
+    for (const Eigen::Vector3d& v : raw[i].points_m) {
+      if (v.allFinite() && v.cwiseAbs().maxCoeff() > kMaxMeshCoordinate_m) {
+        throw InputError(path + ": piece " + std::to_string(i + 1) + " ('" + raw[i].name +
+                         "'): a vertex lies farther than 1e6 m from the file's origin");
+      }
+    }
     try {
       const HullPiece h = convex_hull(raw[i].points_m);
       Piece p;

@@ -10,12 +10,21 @@
 
 namespace fragsim {
 
+// The farthest a piece's vertex may lie from the file's origin, per coordinate.
+inline constexpr double kMaxMeshCoordinate_m = 1e6;
+
 // The pieces of an .obj, .gltf or .glb file (by its extension), in the file's frame: each the
 // convex hull of its mesh's vertices (glTF: with the node's transform and its parents' applied),
 // of uniform density. Throws InputError, one line naming the file and, where it is one piece's
 // fault, the piece: not found or unreadable, not parsable, no mesh, more than kMaxPieces pieces,
-// a non-finite vertex, a flat or zero-volume piece (below kMinHullVolume_m3).
+// a non-finite vertex or one beyond kMaxMeshCoordinate_m, a flat or zero-volume piece (below
+// kMinHullVolume_m3).
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3);
+
+// The same from a file's bytes already in memory: `path` gives the format (its extension), the
+// name in messages and the folder a .gltf's external buffers are looked up in.
+std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
+                                double density_kgpm3);
 
 // Each piece's hull (a grid piece's box) in the object's frame, one OBJ object `piece_<n>` per
 // piece with 17 significant digits, so the file reads back to the last bit of every vertex.

@@ -9,6 +9,7 @@
 #include "experiments/evaluation.hpp"
 #include "experiments/evaluation_codec.hpp"
 #include "experiments/process_runner.hpp"
+#include "experiments/shard.hpp"
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
 #include "metrics/trajectory_record.hpp"
@@ -320,6 +321,28 @@ std::optional<SuiteRecommendation> recommend_suite(const std::vector<SuiteRow>& 
   return best;
 }
 
+std::string suite_plan_fingerprint(const std::map<std::string, std::string>& scenes,
+                                   const std::vector<SuiteRun>& runs,
+                                   const std::vector<SuiteVariant>& variants) {
+  PlanText t;
+  t.add("fragsim suite plan 1").add(scenes.size());
+  for (const auto& [name, text] : scenes) t.add(name).add(text);
+  t.add(runs.size());
+  for (const SuiteRun& r : runs) {
+    t.add(r.scene).add(r.distance_m).add(r.aim).add(r.toward_camera_mps).add(r.mode).add(r.seed);
+    const std::vector<SceneOverride> keys = suite_overrides(r);
+    t.add(keys.size());
+    for (const SceneOverride& o : keys) t.add(o.key).add(o.value);
+  }
+  t.add(variants.size());
+  for (const SuiteVariant& v : variants) {
+    t.add(v.label).add(v.strategy).add(v.overrides.size());
+    for (const SceneOverride& o : v.overrides) t.add(o.key).add(o.value);
+  }
+  t.add(suite_csv({}, {}));  // the column header
+  return plan_fingerprint(t.text());
+}
+
 std::string suite_csv(const std::vector<SuiteRun>& runs,
                       const std::vector<SuiteOutcome>& outcomes) {
   std::string csv =
@@ -336,6 +359,50 @@ std::string suite_csv(const std::vector<SuiteRun>& runs,
     csv += '\n';
   }
   return csv;
+}
+
+SuiteTable read_suite_csv(const std::string& csv) {
+  std::istringstream in(csv);
+  std::string line;
+  const std::string header = suite_csv({}, {});
+  if (!std::getline(in, line) || line + "\n" != header) {
+    throw std::runtime_error("line 1: not the suite CSV's header");
+  }
+  SuiteTable t;
+  int number = 1;
+  while (std::getline(in, line)) {
+    ++number;
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    std::string cell;
+    while (std::getline(row, cell, ',')) cells.push_back(cell);
+    if (cells.size() != 12) {
+      throw std::runtime_error("line " + std::to_string(number) + ": expected 12 cells");
+    }
+    SuiteRun r{cells[0], cells[1], cells[2], cells[3], cells[5], 0};
+    SuiteOutcome o;
+    try {
+      r.seed = std::stoull(cells[4]);
+      o.near_fragments = std::stoi(cells[7]);
+      o.camera_hits = std::stoi(cells[8]);
+      o.deviation_mean_m = std::stod(cells[9]);
+      o.near_misses = std::stoi(cells[10]);
+      o.strategy_ms_median = std::stod(cells[11]);
+    } catch (const std::logic_error&) {
+      throw std::runtime_error("line " + std::to_string(number) + ": unreadable number");
+    }
+    o.variant = cells[6];
+    // A run's rows are consecutive: a new run starts where the run's fields change.
+    const bool same = !t.runs.empty() && t.runs.back().scene == r.scene &&
+                      t.runs.back().distance_m == r.distance_m && t.runs.back().aim == r.aim &&
+                      t.runs.back().toward_camera_mps == r.toward_camera_mps &&
+                      t.runs.back().mode == r.mode && t.runs.back().seed == r.seed;
+    if (!same) t.runs.push_back(r);
+    o.run = t.runs.size() - 1;
+    t.outcomes.push_back(std::move(o));
+  }
+  if (!t.runs.empty()) t.variants = t.outcomes.size() / t.runs.size();
+  return t;
 }
 
 }  // namespace fragsim

@@ -161,8 +161,25 @@ struct SuiteRecommendation {
 std::optional<SuiteRecommendation> recommend_suite(const std::vector<SuiteRow>& player,
                                                    const std::vector<SuiteRow>& all);
 
+// The fingerprint of a plan for its slices (experiments/shard.hpp): the scene files' text, every
+// run with its scene keys, every variant with its keys, and the CSV's column header.
+std::string suite_plan_fingerprint(const std::map<std::string, std::string>& scenes,
+                                   const std::vector<SuiteRun>& runs,
+                                   const std::vector<SuiteVariant>& variants);
+
 // The tidy CSV: a header and one row per run and variant, strategy_ms_median last (the only
 // column whose bytes change between runs).
 std::string suite_csv(const std::vector<SuiteRun>& runs, const std::vector<SuiteOutcome>& outcomes);
+
+// A suite CSV read back (a merged one: `fragsim merge` prints its tables): the runs in file order,
+// each starting where a row's run fields (scene, distance, aim, speed, seed, mode) change, and
+// the outcomes with their run index. Throws std::runtime_error naming the line: not the suite's
+// header, a row without 12 cells, an unreadable number.
+struct SuiteTable {
+  std::vector<SuiteRun> runs;
+  std::vector<SuiteOutcome> outcomes;
+  std::size_t variants = 0;  // rows per run
+};
+SuiteTable read_suite_csv(const std::string& csv);
 
 }  // namespace fragsim

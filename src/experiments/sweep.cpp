@@ -11,6 +11,7 @@
 
 #include "experiments/evaluation_codec.hpp"
 #include "experiments/process_runner.hpp"
+#include "experiments/shard.hpp"
 #include "io/number_format.hpp"
 
 namespace fragsim {
@@ -305,6 +306,28 @@ std::string describe_combination(const SweepPlan& plan,
   return s;
 }
 
+std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns) {
+  // The scene file's path is left out: the same scene read from another folder (another node's
+  // checkout) makes the same rows.
+  PlanText t;
+  t.add("fragsim sweep plan 1").add(plan.scene_text).add(plan.base.size());
+  for (const SceneOverride& o : plan.base) t.add(o.key).add(o.value);
+  t.add(plan.axes.size());
+  for (const SweepAxis& a : plan.axes) {
+    t.add(a.key).add(a.values.size());
+    for (const std::string& v : a.values) t.add(v);
+  }
+  t.add(plan.jobs.size());
+  for (const SweepJob& j : plan.jobs) {
+    for (std::size_t i : j.value_index) t.add(i);
+    t.add(j.seed);
+  }
+  t.add(plan.strategies.size());
+  for (const std::string& n : plan.strategies) t.add(n);
+  t.add(plan.occlusion ? 1u : 0u).add(columns);
+  return plan_fingerprint(t.text());
+}
+
 std::string describe_sweep_job(const SweepPlan& plan, const SweepJob& job) {
   return describe_combination(plan, job.value_index) + ", seed " + std::to_string(job.seed);
 }
@@ -315,7 +338,8 @@ std::vector<std::vector<Evaluation>> run_sweep(
   options.jobs = jobs;
   if (on_done) options.on_done = [&on_done](std::size_t, std::size_t done) { on_done(done); };
   options.describe = [&plan](std::size_t j) {
-    return "job " + std::to_string(j + 1) + " (" + describe_sweep_job(plan, plan.jobs[j]) + ")";
+    return "job " + std::to_string(plan.first_job + j + 1) + " (" +
+           describe_sweep_job(plan, plan.jobs[j]) + ")";
   };
   const std::vector<std::string> encoded = run_in_processes(
       plan.jobs.size(),
@@ -338,7 +362,7 @@ std::vector<std::vector<Evaluation>> run_sweep(
   for (std::size_t j = 0; j < encoded.size(); ++j) {
     out.push_back(decode_evaluations(encoded[j]));
     if (out.back().size() != plan.strategies.size()) {
-      throw std::runtime_error("job " + std::to_string(j + 1) + " (" +
+      throw std::runtime_error("job " + std::to_string(plan.first_job + j + 1) + " (" +
                                describe_sweep_job(plan, plan.jobs[j]) +
                                "): strategies missing in the worker's result");
     }

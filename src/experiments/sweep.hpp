@@ -116,12 +116,18 @@ struct SweepPlan {
   std::vector<SweepJob> jobs;           // in output order
   std::vector<std::string> strategies;  // in --strategies order
   bool occlusion = true;
+  // A slice's first job in the whole plan (--shard), so messages number jobs as the whole does.
+  std::size_t first_job = 0;
 };
 
 // A job's scene keys: the base options, one value per axis, the seed.
 std::vector<SceneOverride> sweep_overrides(const SweepPlan& plan,
                                            const std::vector<std::size_t>& value_index,
                                            std::uint64_t seed);
+
+// The plan's fingerprint for its slices (experiments/shard.hpp): everything that decides the rows
+// (scene text, keys, values, jobs, strategies, occlusion) and the CSV's column header `columns`.
+std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns);
 
 // "a=1, b=2": one combination of the varied values; with the seed, "a=1, b=2, seed 3".
 std::string describe_combination(const SweepPlan& plan,

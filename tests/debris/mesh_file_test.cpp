@@ -173,6 +173,11 @@ TEST_F(MeshFile, EachBadInputIsOneLineNamingFileAndPiece) {
   const std::string too_many = write("many.obj", many);
   expect_line(error_of(too_many), too_many, "more than 20000 pieces");
 
+  // gltf_mesh_fuzz's seed vertices_at_1e31.glb: a hull that far out is rounding, not a piece.
+  const std::string far =
+      write("far.obj", "o Away\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1.5e6\nf 1 2 3\nf 1 2 4\n");
+  expect_line(error_of(far), far, "piece 1 ('Away'): a vertex lies farther than 1e6 m");
+
   const std::string stl = write("piece.stl", "solid\n");
   expect_line(error_of(stl), stl, "unknown mesh format");
 
@@ -228,6 +233,21 @@ TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
   EXPECT_NEAR(p[0].shape->volume_m3, 48.0, 48.0 * 1e-6);
   EXPECT_NEAR((p[0].centre_m - Eigen::Vector3d(2, 2, 3)).norm(), 0.0, 1e-6);
   EXPECT_NEAR((p[0].half_extents_m - Eigen::Vector3d(2, 1, 3)).norm(), 0.0, 1e-5);
+
+  // The seed position_count_wraps.gltf of gltf_mesh_fuzz: a POSITION count whose 12-byte positions
+  // wrap 64 bits to 8 bytes (12 x 1537228672809129302 = 2^64 + 8) read past the 96-byte buffer; it
+  // is refused. So is an accessor that starts past its view's end.
+  std::string wraps = json;
+  wraps.replace(wraps.find(R"("count":8)"), 9, R"("count":1537228672809129302)");
+  const std::string wrapped = write("wraps.gltf", wraps);
+  EXPECT_NE(error_of(wrapped).find("piece 1 ('box'): POSITION runs past the end of its buffer"),
+            std::string::npos)
+      << error_of(wrapped);
+  std::string past = json;
+  past.replace(past.find(R"("count":8,)"), 10, R"("count":1,"byteOffset":200,)");
+  const std::string beyond = write("beyond.gltf", past);
+  EXPECT_NE(error_of(beyond).find("POSITION runs past the end of its buffer"), std::string::npos)
+      << error_of(beyond);
 
   // A glTF file whose only node has no mesh has no piece.
   const std::string empty =

@@ -57,7 +57,12 @@ void HealthObserver::begin(const RunInfo& info, const StepSnapshot& initial) {
     force_cap_mps2_ = 0.0;
     applies_forces_ = false;
   }
-  wall_speed_mps_ = info.strategy == "wall" ? scene_->camera.speed_mps : 0.0;
+  // The wall rides with the camera: a path camera moves at speed_mps, a player or a track at up
+  // to V_c (speed_mps is not theirs).
+  const CameraDef& cam = scene_->camera;
+  wall_speed_mps_ = info.strategy != "wall"         ? 0.0
+                    : cam.mode == CameraMode::kPath ? cam.speed_mps
+                                                    : std::max(cam.speed_mps, cam.max_speed_mps);
 
   const std::vector<FragmentSpawn> spawns = explode(*scene_);
   const Eigen::Vector3d& g = scene_->sim.gravity_mps2;

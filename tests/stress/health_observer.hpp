@@ -22,7 +22,8 @@
 //     v the largest speed the fragment can bring into the step;
 //   while in contact, + m |g| (growth of the deepest ground penetration in this contact): the
 //     correction lifts a deeply sunk fragment back at up to c, regaining that potential energy;
-//   wall runs, each step in contact, + m |g| u dt: the wall may carry the fragment upward;
+//   wall runs, each step in contact, + m |g| u dt: the wall may carry the fragment upward (u: a
+//     path camera's speed_mps, a player's or a track's V_c, the most either moves at);
 //   fragment collisions on, at each onset, + m |g| 4 r: two overlapping fragments (overlap at
 //     most their size) are pushed apart, lifting one by up to that.
 // With fragment collisions on, fragments trade energy (a fast one hits a slow one), so the bound
@@ -102,7 +103,7 @@ class HealthObserver final : public RunObserver {
   double dt_s_ = 0.0;
   double force_cap_mps2_ = 0.0;  // the strategy's acceleration cap
   bool applies_forces_ = false;
-  double wall_speed_mps_ = 0.0;  // u: the wall's speed (wall runs), else 0
+  double wall_speed_mps_ = 0.0;  // u: the wall's largest speed (wall runs), else 0
   std::vector<Fragment> fragments_;
   std::vector<double> force_N_;  // |F| this step, by fragment
 };

@@ -4,9 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <string>
 
+#include "io/atomic_file.hpp"
+#include "io/number_format.hpp"
 #include "sim/random.hpp"
 #include "sim/scene_file.hpp"
 
@@ -20,6 +23,9 @@ const Eigen::Vector3d kForward{0.0, 0.0, -1.0};  // it looks down -z at t = 0
 struct Spec {
   std::string name;
   int splits = 12;
+  bool voronoi = false;  // object.pattern = voronoi with `pieces` cells, `cluster`
+  int pieces = 1000;
+  double cluster = 0.0;
   double size_m = 1.2;
   Placement placement = Placement::kAhead;
   double distance_m = 10.0;                             // ahead or behind the eye (kAhead, kBehind)
@@ -37,6 +43,13 @@ struct Spec {
   CameraMotion motion = CameraMotion::kStill;
   double camera_speed_mps = 0.0;     // kMaxSpeed, kReversing (also max_speed_mps)
   double still_max_speed_mps = 3.0;  // V_c of a still camera
+  // kPlayer: the bounds told to the strategies (the corner cases' extremes by default).
+  double player_interval_s = -1.0;  // < 0: one step
+  double player_accel_mps2 = std::numeric_limits<double>::infinity();
+  double turn_rate_degps = 1e5;
+  // kTrack: the track's sample spacing (< 0: one step) and how fast its view turns.
+  double track_interval_s = -1.0;
+  double track_turn_radps = 1.0;
   Eigen::Vector3d camera_dir = Eigen::Vector3d(0.0, 0.0, -1.0);  // unit
   double near_m = 0.1;
   double fovy_deg = 60.0;
@@ -79,8 +92,57 @@ const char* motion_name(CameraMotion m) {
       return "reversing";
     case CameraMotion::kPlayer:
       return "player";
+    case CameraMotion::kTrack:
+      return "track";
   }
   return "?";
+}
+
+// A seeded random walk from the first eye position: speeds up to 0.999 V_c (the file's speed rule
+// allows V_c exactly; the margin keeps rounding clear of it), a view turning at up to turn_radps,
+// samples every interval_s from 0 past the end of the run.
+std::vector<CameraSample> random_track(std::uint64_t seed, double v_c, double interval_s,
+                                       double duration_s, double turn_radps) {
+  Random rng(seed * 0xD1B54A32D192ED03ull + 7u);
+  std::vector<CameraSample> out;
+  CameraSample s;
+  s.eye_m = kEye0;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  const int n = static_cast<int>(std::ceil(duration_s / interval_s)) + 2;
+  for (int k = 0; k < n; ++k) {
+    s.t_s = k * interval_s;
+    if (k > 0) s.eye_m += velocity * interval_s;
+    // The next leg: a new direction and a speed up to V_c, a tenth of them at the limit.
+    Eigen::Vector3d dir(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    if (dir.norm() < 1e-3) dir = Eigen::Vector3d::UnitX();
+    const double speed = 0.999 * v_c * (rng.uniform() < 0.1 ? 1.0 : rng.uniform());
+    velocity = speed * dir.normalized();
+    // The view: forward turned toward a random direction by at most turn_radps * interval_s,
+    // up the world's up made orthogonal to it (x when forward is near vertical).
+    Eigen::Vector3d target(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    if (target.norm() < 1e-3) target = kForward;
+    const double step = std::min(turn_radps * interval_s, 3.0);
+    s.forward = (s.forward + std::tan(std::min(step, 1.4)) * target.normalized()).normalized();
+    Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+    if (std::abs(up.dot(s.forward)) > 0.99) up = Eigen::Vector3d::UnitX();
+    s.up = (up - up.dot(s.forward) * s.forward).normalized();
+    out.push_back(s);
+  }
+  return out;
+}
+
+// Writes the samples as a camera track file and returns its path.
+std::string write_track(const std::vector<CameraSample>& samples, const std::string& name) {
+  std::string csv = "t_s,eye_x_m,eye_y_m,eye_z_m,forward_x,forward_y,forward_z,up_x,up_y,up_z\n";
+  for (const CameraSample& c : samples) {
+    const double v[10] = {c.t_s,         c.eye_m.x(),   c.eye_m.y(), c.eye_m.z(), c.forward.x(),
+                          c.forward.y(), c.forward.z(), c.up.x(),    c.up.y(),    c.up.z()};
+    for (int i = 0; i < 10; ++i) csv += (i ? "," : "") + format_double(v[i]);
+    csv += '\n';
+  }
+  const std::string path = (std::filesystem::path(track_dir()) / name).string();
+  write_file_atomically(path, csv);
+  return path;
 }
 
 Eigen::Vector3d object_centre_for(const Spec& s) {
@@ -107,7 +169,7 @@ std::string g3(double v) {
 StressCase build(const Spec& s, const Budget& budget, const std::string& id, std::uint64_t seed) {
   Scene sc;
   sc.name = "stress-" + s.name;
-  const int fragments = s.splits * s.splits * s.splits;
+  const int fragments = s.voronoi ? s.pieces : s.splits * s.splits * s.splits;
   const int steps = budget.steps_for(fragments, s.collisions);
   sc.sim.dt_s = s.dt_s;
   sc.sim.duration_s = steps * s.dt_s;
@@ -121,6 +183,11 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
   // The object never starts in the ground: its bottom stays 5 cm above it.
   sc.object.size_m = std::min(s.size_m, 2.0 * (centre.y() - 0.05));
   sc.object.splits = s.splits;
+  if (s.voronoi) {
+    sc.object.pattern = DebrisPattern::kVoronoi;
+    sc.object.pieces = s.pieces;
+    sc.object.cluster = s.cluster;
+  }
   sc.explosion.speed_mps = s.speed_mps;
   sc.explosion.jitter = s.jitter;
   sc.explosion.spin_radps = s.spin_radps;
@@ -165,12 +232,25 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
       cam.waypoints_m = {kEye0};
       cam.speed_mps = 0.0;
       cam.max_speed_mps = v;
-      cam.player_interval_s = s.dt_s;
-      cam.player_accel_mps2 = std::numeric_limits<double>::infinity();
-      cam.turn_rate_degps = 1e5;
+      cam.player_interval_s = s.player_interval_s < 0.0 ? s.dt_s : s.player_interval_s;
+      cam.player_accel_mps2 = s.player_accel_mps2;
+      cam.turn_rate_degps = s.turn_rate_degps;
       sc.explosion.aim = ExplosionAim::kPresent;
       sc.edge_min.camera_model = CameraModel::kBoundedAccel;
       break;
+    case CameraMotion::kTrack: {
+      cam.mode = CameraMode::kTrack;
+      cam.waypoints_m = {kEye0};
+      cam.speed_mps = 0.0;
+      cam.max_speed_mps = v;
+      // At most ~2,000 samples a file, whatever the step.
+      const double h = std::max(s.track_interval_s < 0.0 ? s.dt_s : s.track_interval_s,
+                                sc.sim.duration_s / 2000.0);
+      cam.track_samples = random_track(seed, v, h, sc.sim.duration_s, s.track_turn_radps);
+      cam.track_file =
+          write_track(cam.track_samples, "fragsim-stress-track-" + std::to_string(seed) + ".csv");
+      break;
+    }
   }
 
   sc.wall.distance_m = s.wall_distance_m;
@@ -192,9 +272,11 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
   c.id = id;
   c.seed = seed;
   c.description =
-      std::to_string(fragments) + " fragments, " + std::to_string(steps) + " steps of " +
-      g3(s.dt_s) + " s; blast " + placement_name(s.placement) + " at " + g3(s.speed_mps) +
-      " m/s; camera " + motion_name(s.motion) + " " +
+      std::to_string(fragments) +
+      (s.voronoi ? " Voronoi cells (cluster " + g3(s.cluster) + ")" : std::string(" fragments")) +
+      ", " + std::to_string(steps) + " steps of " + g3(s.dt_s) + " s; blast " +
+      placement_name(s.placement) + " at " + g3(s.speed_mps) + " m/s; camera " +
+      motion_name(s.motion) + " " +
       (s.motion == CameraMotion::kStill ? "(V_c " + g3(cam.max_speed_mps) + ")" : g3(v)) +
       " m/s; collisions " + (s.collisions ? "on" : "off") + "; " +
       (sc.sim.uses_exact_solver() ? "exact" : "quick") + " solver; gravity " +
@@ -229,6 +311,13 @@ Eigen::Vector3d unit_vector(Random& rng) {
 }
 
 }  // namespace
+
+std::string track_dir() {
+  if (const char* env = std::getenv("FRAGSIM_STRESS_DIR")) {
+    if (*env) return env;
+  }
+  return std::filesystem::temp_directory_path().string();
+}
 
 int Budget::steps_for(int fragments, bool collisions) const {
   const double work =
@@ -513,6 +602,34 @@ StressCase random_case(std::uint64_t seed, const Budget& budget) {
   s.wall_distance_m = rng.uniform(0.2, 3.0);
   s.wall_thickness_m = rng.uniform(0.01, 0.3);
   s.wall_restitution = rng.uniform();
+  // Drawn last, so the draws above keep the values they had before these existed. A fifth of
+  // the cameras a player with drawn bounds, a fifth a track file; a quarter of the objects
+  // Voronoi cells, as many as the grid would have had.
+  const double mode = rng.uniform();
+  const double player_interval =
+      rng.uniform() < 0.2 ? std::numeric_limits<double>::infinity() : log_uniform(rng, 1e-3, 2.0);
+  const double player_accel =
+      rng.uniform() < 0.25 ? std::numeric_limits<double>::infinity() : log_uniform(rng, 0.1, 1e4);
+  const double turn_rate = log_uniform(rng, 1.0, 1e5);
+  const double track_interval = rng.uniform() < 0.5 ? -1.0 : log_uniform(rng, 1e-3, 0.5);
+  const double track_turn = log_uniform(rng, 0.01, 30.0);
+  const bool voronoi = rng.uniform() < 0.25;
+  const double cluster = rng.uniform() < 0.5 ? 0.0 : rng.uniform(0.0, 0.95);
+  if (mode < 0.2) {
+    s.motion = CameraMotion::kPlayer;
+    s.player_interval_s = player_interval;
+    s.player_accel_mps2 = player_accel;
+    s.turn_rate_degps = turn_rate;
+  } else if (mode < 0.4) {
+    s.motion = CameraMotion::kTrack;
+    s.track_interval_s = track_interval;
+    s.track_turn_radps = track_turn;
+  }
+  if (voronoi) {
+    s.voronoi = true;
+    s.pieces = s.splits * s.splits * s.splits;
+    s.cluster = cluster;
+  }
   return build(s, budget, "random/" + std::to_string(seed), seed);
 }
 

@@ -47,8 +47,16 @@ enum class CameraMotion {
   kStill,      // one waypoint
   kMaxSpeed,   // a straight line at camera.speed_mps = camera.max_speed_mps
   kReversing,  // waypoints alternating between two points speed * dt apart: it turns every step
-  kPlayer,     // camera.mode = player at V_c = speed, instant turns, a change of mind every step
+  kPlayer,     // camera.mode = player at V_c = speed (instant turns and a change of mind every
+               // step in the corner cases; drawn bounds in the random ones)
+  kTrack,      // camera.mode = track: a seeded random walk at up to V_c = speed, turning as it
+               // goes, written as a camera track file (track_dir()) and read back
 };
+
+// Where random track cases write their camera track files (FRAGSIM_STRESS_DIR if set, else the
+// system's temporary folder). A file's name and content are fixed by the case's seed, so two
+// processes writing the same case write the same bytes.
+std::string track_dir();
 
 // Where the object (and so the blast) is, relative to the camera's first eye position.
 enum class Placement {
