@@ -169,8 +169,9 @@ int cmd_suite(const std::vector<std::string>& args) {
               << " runs\n";
     print_rows(rows, std::cout);
   }
-  std::cout << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
-               "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
+  std::cout << "\nclean: zero near-plane fragments, camera hits and vanished fragments; "
+               "dev_mean_m: mean over runs of each run's mean deviation from none;\nmisses_kept: "
+               "the strategy's near "
                "misses over none's, summed over the runs; strat_ms: median over runs of the "
                "median strategy ms per step.\n";
   const std::vector<SuiteRow> player =

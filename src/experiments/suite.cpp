@@ -29,6 +29,7 @@ SuiteOutcome outcome_of(const RunSummary& s, std::size_t run, const std::string&
   o.variant = label;
   o.near_fragments = s.near_fragments;
   o.camera_hits = s.camera_hit_fragments;
+  o.vanished = s.vanished_fragments;
   o.deviation_mean_m = s.deviation_mean_m;
   o.near_misses = s.near_misses;
   o.strategy_ms_median = s.strategy_ms_median;
@@ -237,6 +238,7 @@ std::vector<SuiteOutcome> run_suite(const std::map<std::string, std::string>& sc
           e.summary.strategy = o.variant;
           e.summary.near_fragments = o.near_fragments;
           e.summary.camera_hit_fragments = o.camera_hits;
+          e.summary.vanished_fragments = o.vanished;
           e.summary.deviation_mean_m = o.deviation_mean_m;
           e.summary.near_misses = o.near_misses;
           e.summary.strategy_ms_median = o.strategy_ms_median;

@@ -85,6 +85,7 @@ const std::vector<SummaryField>& summary_field_table() {
       {"depth_step_m", &RunSummary::depth_step_m},
       // Last, so the columns before it keep their places.
       {"deferred", &RunSummary::deferred},
+      {"vanished_fragments", &RunSummary::vanished_fragments},
   };
   return cols;
 }

@@ -134,31 +134,35 @@ std::uint64_t fnv1a(const std::string& bytes) {
 // The default scene's summary.csv, pinned. A change of this hash means the simulation, a strategy
 // or a metric now gives different numbers for the same scene and seed: if that is intended,
 // rerun `fragsim compare --scene data/scenes/front.ini --csv DIR`, check the table, and update
-// the constant (and the README's table) in the same commit.
+// the constant (and the README's table) in the same commit. 0xa567d4458e84c8be before summary.csv
+// had its `vanished_fragments` column (0 in every one of these runs): with that column removed the
+// bytes hash to it still.
 TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
                                      "near-plane", "edge", "edge-min"};
   const std::string csv = summary_csv(scene, compare(scene, all, true, nullptr, 2));
-  EXPECT_EQ(fnv1a(csv), 0xa567d4458e84c8beull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0x669605fe81c98c48ull) << csv;
 }
 
 // The first edge-min, by name: camera_model = constant must give what it gave before the robust
 // models existed (the default scene's whole summary hashed 0xc9daf5bd1f5f9e15 then; its edge-min
 // part hashed 0x3a37af8689eda96b). Since the look-ahead stops at the ground instead of the scene's
-// end and summary.csv has a `deferred` column, it is 0x50a3f6ec292999a9: near 0, cam 0, dev_mean
-// 0.0720 m, dev_max 7.223 m, impulse 19.64 Ns, capped 8 as before (docs/camera_models.md,
-// section 8).
+// end and summary.csv has a `deferred` column, it was 0x50a3f6ec292999a9: near 0, cam 0,
+// dev_mean 0.0720 m, dev_max 7.223 m, impulse 19.64 Ns, capped 8 as before (docs/camera_models.md,
+// section 8); with the `vanished_fragments` column (0) it is 0xf035873d9a7a04eb, the same bytes
+// otherwise.
 TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
   scene.edge_min.camera_model = CameraModel::kConstant;
   const std::string csv = summary_csv(scene, compare(scene, {"edge-min"}, true, nullptr, 2));
-  EXPECT_EQ(fnv1a(csv), 0x50a3f6ec292999a9ull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0xf035873d9a7a04ebull) << csv;
 }
 
 // The shipped Voronoi scene (front.ini's set-up, 1,000 cells): its summary pinned the same way,
 // and the verdict it supports checked in numbers: edge-min keeps every piece off the lens and
 // the camera body while `none` lets them through (README, "Debris as a fracture tool makes it").
+// 0xd3e597a857a49a5c before the `vanished_fragments` column, the same bytes otherwise.
 TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/voronoi.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
@@ -170,7 +174,24 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   EXPECT_EQ(runs.back().summary.near_fragments, 0);
   EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
-  EXPECT_EQ(fnv1a(csv), 0xd3e597a857a49a5cull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0x8848415b3b0a370aull) << csv;
+}
+
+// `fade` on the default scene, pinned, with the numbers the README reads: physics untouched (no
+// deviation, the camera body hit by the same 34 fragments as without control), no fragment drawn
+// cut at the near plane, and 111 vanished in view.
+TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
+  const std::vector<Evaluation> runs = compare(scene, {"fade"}, true, nullptr, 2);
+  ASSERT_EQ(runs.size(), 1u);
+  const RunSummary& s = runs[0].summary;
+  EXPECT_EQ(s.near_fragments, 0);
+  EXPECT_EQ(s.camera_hit_fragments, 34);
+  EXPECT_EQ(s.vanished_fragments, 111);
+  EXPECT_EQ(s.deviation_max_m, 0.0);
+  EXPECT_EQ(s.impulse_Ns, 0.0);
+  const std::string csv = summary_csv(scene, runs);
+  EXPECT_EQ(fnv1a(csv), 0x7ce12e61cc298ed1ull) << csv;
 }
 
 }  // namespace
