@@ -22,7 +22,7 @@ agg = sprintf("awk -F, -v modes='%s' 'BEGIN{n=split(modes,m,\",\"); for(i=1;i<=n
   {print \"missing columns\" > \"/dev/stderr\"; exit 1}; next} \
   modes!=\"all\" && !($c[\"mode\"] in want){next} \
   {s=$c[\"strategy\"]; if(!(s in runs)){order[++k]=s}; runs[s]++; \
-   if($c[\"near_fragments\"]+$c[\"camera_hit_fragments\"]==0) clean[s]++; dev[s]+=$c[\"deviation_mean_m\"]} \
+   if($c[\"near_fragments\"]+$c[\"camera_hit_fragments\"]+(\"vanished_fragments\" in c ? $c[\"vanished_fragments\"] : 0)==0) clean[s]++; dev[s]+=$c[\"deviation_mean_m\"]} \
   END{for(i=1;i<=k;i++){s=order[i]; p=sprintf(\"%%.6g,%%.6g\", 100*clean[s]/runs[s], dev[s]/runs[s]); \
    if(!(p in name)){at[++q]=p; name[p]=s; first[p]=s; continue}; \
    t=s; if(index(s, \"edge-min/\")==1 && index(first[p], \"edge-min/\")==1) t=substr(s, 10); \

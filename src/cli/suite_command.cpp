@@ -97,8 +97,9 @@ void print_suite_tables(const std::vector<SuiteRun>& runs,
         << " runs\n";
     print_rows(rows, out);
   }
-  out << "\nclean: zero near-plane fragments and zero camera hits; dev_mean_m: mean over "
-         "runs of each run's mean deviation from none;\nmisses_kept: the strategy's near "
+  out << "\nclean: zero near-plane fragments, camera hits and vanished fragments; "
+         "dev_mean_m: mean over runs of each run's mean deviation from none;\nmisses_kept: "
+         "the strategy's near "
          "misses over none's, summed over the runs; strat_ms: median over runs of the "
          "median strategy ms per step.\n";
   const std::vector<SuiteRow> player =

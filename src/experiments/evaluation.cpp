@@ -13,6 +13,7 @@
 #include "metrics/occlusion_metric.hpp"
 #include "metrics/strategy_activity_metric.hpp"
 #include "metrics/trajectory_record.hpp"
+#include "metrics/vanished_metric.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 
@@ -26,7 +27,8 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   CostMetric cost;
   ExitMetric exits(scene.metrics);
   CameraTrack camera;
-  std::vector<RunObserver*> observers{&near, &activity, &cost, &exits, &camera};
+  VanishedMetric vanished;
+  std::vector<RunObserver*> observers{&near, &activity, &cost, &exits, &camera, &vanished};
   std::optional<OcclusionMetric> occlusion;
   if (options.occlusion) observers.push_back(&occlusion.emplace(scene.metrics));
   std::optional<DeviationMetric> deviation;
@@ -57,6 +59,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   activity.fill(s);
   cost.fill(s);
   exits.fill(s);
+  vanished.fill(s, near);
   for (int i = 0; i < s.fragments; ++i) {
     if (activity.was_capped(i) && (near.intersected(i) || near.camera_hit(i))) ++s.unsaved_by_cap;
   }
@@ -118,8 +121,10 @@ std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::strin
 std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs) {
   std::optional<std::size_t> best;
   auto key = [](const RunSummary& s) {
-    return std::make_tuple(s.near_fragments + s.camera_hit_fragments, s.deviation_mean_m,
-                           -s.near_misses);
+    // A fragment that vanishes fails the goals as one that is cut does: the thesis wants debris
+    // to leave the picture, not to disappear from it.
+    return std::make_tuple(s.near_fragments + s.camera_hit_fragments + s.vanished_fragments,
+                           s.deviation_mean_m, -s.near_misses);
   };
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].summary.strategy == "none") continue;

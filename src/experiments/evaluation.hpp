@@ -49,8 +49,9 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy,
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
                                 bool occlusion = true, RunObserver* extra = nullptr, int jobs = 1);
 
-// The thesis's goals, in order: no near-plane intersections or camera hits, then least mean
-// deviation, then most near misses. The best of the runs other than `none`; nullopt if none.
+// The thesis's goals, in order: no near-plane intersections, camera hits or vanished fragments
+// (each one a failure; the sum is compared), then least mean deviation, then most near misses. The
+// best of the runs other than `none`; nullopt if none.
 std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs);
 
 // The z-fighting flag: the depth step at the reference distance exceeds 1e-3 of that distance.

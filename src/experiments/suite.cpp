@@ -30,6 +30,7 @@ SuiteOutcome outcome_of(const RunSummary& s, std::size_t run, const std::string&
   o.variant = label;
   o.near_fragments = s.near_fragments;
   o.camera_hits = s.camera_hit_fragments;
+  o.vanished = s.vanished_fragments;
   o.deviation_mean_m = s.deviation_mean_m;
   o.near_misses = s.near_misses;
   o.strategy_ms_median = s.strategy_ms_median;
@@ -238,6 +239,7 @@ std::vector<SuiteOutcome> run_suite(const std::map<std::string, std::string>& sc
           e.summary.strategy = o.variant;
           e.summary.near_fragments = o.near_fragments;
           e.summary.camera_hit_fragments = o.camera_hits;
+          e.summary.vanished_fragments = o.vanished;
           e.summary.deviation_mean_m = o.deviation_mean_m;
           e.summary.near_misses = o.near_misses;
           e.summary.strategy_ms_median = o.strategy_ms_median;
@@ -347,12 +349,14 @@ std::string suite_csv(const std::vector<SuiteRun>& runs,
                       const std::vector<SuiteOutcome>& outcomes) {
   std::string csv =
       "scene,object.distance_m,explosion.aim,explosion.toward_camera_mps,seed,mode,strategy,"
-      "near_fragments,camera_hit_fragments,deviation_mean_m,near_misses,strategy_ms_median\n";
+      "near_fragments,camera_hit_fragments,vanished_fragments,deviation_mean_m,near_misses,"
+      "strategy_ms_median\n";
   for (const SuiteOutcome& o : outcomes) {
     const SuiteRun& r = runs.at(o.run);
     csv += r.scene + ',' + r.distance_m + ',' + r.aim + ',' + r.toward_camera_mps + ',' +
            std::to_string(r.seed) + ',' + r.mode + ',' + o.variant + ',' +
-           std::to_string(o.near_fragments) + ',' + std::to_string(o.camera_hits) + ',';
+           std::to_string(o.near_fragments) + ',' + std::to_string(o.camera_hits) + ',' +
+           std::to_string(o.vanished) + ',';
     append_double(csv, o.deviation_mean_m);
     csv += ',' + std::to_string(o.near_misses) + ',';
     append_double(csv, o.strategy_ms_median);
@@ -376,8 +380,8 @@ SuiteTable read_suite_csv(const std::string& csv) {
     std::istringstream row(line);
     std::string cell;
     while (std::getline(row, cell, ',')) cells.push_back(cell);
-    if (cells.size() != 12) {
-      throw std::runtime_error("line " + std::to_string(number) + ": expected 12 cells");
+    if (cells.size() != 13) {
+      throw std::runtime_error("line " + std::to_string(number) + ": expected 13 cells");
     }
     SuiteRun r{cells[0], cells[1], cells[2], cells[3], cells[5], 0};
     SuiteOutcome o;
@@ -385,9 +389,10 @@ SuiteTable read_suite_csv(const std::string& csv) {
       r.seed = std::stoull(cells[4]);
       o.near_fragments = std::stoi(cells[7]);
       o.camera_hits = std::stoi(cells[8]);
-      o.deviation_mean_m = std::stod(cells[9]);
-      o.near_misses = std::stoi(cells[10]);
-      o.strategy_ms_median = std::stod(cells[11]);
+      o.vanished = std::stoi(cells[9]);
+      o.deviation_mean_m = std::stod(cells[10]);
+      o.near_misses = std::stoi(cells[11]);
+      o.strategy_ms_median = std::stod(cells[12]);
     } catch (const std::logic_error&) {
       throw std::runtime_error("line " + std::to_string(number) + ": unreadable number");
     }

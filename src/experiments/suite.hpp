@@ -106,10 +106,11 @@ struct SuiteOutcome {
   std::string variant;  // SuiteVariant::label
   int near_fragments = 0;
   int camera_hits = 0;
+  int vanished = 0;  // faded out in view (fade): a failure as a cut is
   double deviation_mean_m = 0.0;
   int near_misses = 0;
   double strategy_ms_median = 0.0;
-  bool clean() const { return near_fragments == 0 && camera_hits == 0; }
+  bool clean() const { return near_fragments == 0 && camera_hits == 0 && vanished == 0; }
 };
 
 // One run: `none` on the run's scene (recorded as the reference), then every variant on the same

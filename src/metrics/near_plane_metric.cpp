@@ -15,6 +15,8 @@ void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
   prev_camera_ = initial.camera;
   near_hit_.assign(n, 0);
   body_hit_.assign(n, 0);
+  near_invisible_.assign(n, 0);
+  prev_opacity_.assign(n, 1.0f);
   per_step_.clear();
   per_step_.reserve(static_cast<std::size_t>(info.step_count));
   fragment_steps_ = 0;
@@ -22,16 +24,23 @@ void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
 
 void NearPlaneMetric::observe(const StepSnapshot& snap) {
   int count = 0;
+  const bool translucent = !snap.opacity.empty();
   for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
     const FragmentState& f = snap.fragments[i];
     const SweepEnd now = sweep_end(snap.camera, f);
+    const float opacity = translucent ? snap.opacity[i] : 1.0f;
     // The hull's box first: it is cheap and clears all but the pieces at the lens.
     if (sweep_meets_near_rectangle(prev_[i], now) &&
         (!f.shape ||
          hull_sweep_.meets_near_rectangle(prev_camera_, prev_state_[i], snap.camera, f))) {
-      ++count;
-      near_hit_[i] = 1;
+      if (std::min(prev_opacity_[i], opacity) > 0.0f) {
+        ++count;
+        near_hit_[i] = 1;
+      } else {
+        near_invisible_[i] = 1;
+      }
     }
+    prev_opacity_[i] = opacity;
     if (!body_hit_[i] && sweep_meets_camera_body(prev_[i], now, snap.camera_body_half_m)) {
       body_hit_[i] = 1;
     }

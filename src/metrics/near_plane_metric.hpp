@@ -5,6 +5,11 @@
 // step's near distance; a camera hit is a touch of the camera body, reported by the physics'
 // sensor or found by the same swept test (for a convex piece, with its hull's camera-aligned
 // box: conservative).
+//
+// A frame with opacities (the `fade` strategy): a fragment invisible (opacity 0) at the start or
+// the end of the step in which it meets the near rectangle is drawn neither cut nor whole, so it
+// is no near-plane intersection; it is counted among the vanished (vanished_metric.hpp) instead.
+// Camera hits stay what they are: the fragment still flies into the camera's body.
 
 #include <vector>
 
@@ -26,6 +31,10 @@ class NearPlaneMetric final : public RunObserver {
     return near_hit_[static_cast<std::size_t>(fragment)] != 0;
   }
   bool camera_hit(int fragment) const { return body_hit_[static_cast<std::size_t>(fragment)] != 0; }
+  // Whether the fragment met the near rectangle while invisible (so it is not intersected()).
+  bool crossed_invisible(int fragment) const {
+    return near_invisible_[static_cast<std::size_t>(fragment)] != 0;
+  }
 
  private:
   std::vector<SweepEnd> prev_;
@@ -35,6 +44,8 @@ class NearPlaneMetric final : public RunObserver {
   HullSweep hull_sweep_;
   std::vector<char> near_hit_;
   std::vector<char> body_hit_;
+  std::vector<char> near_invisible_;
+  std::vector<float> prev_opacity_;  // each fragment's in the last snapshot (1: opaque)
   std::vector<int> per_step_;
   int fragment_steps_ = 0;
 };

@@ -55,10 +55,20 @@ int convex_hull(ScreenPoint* p, int n, ScreenPoint* hull) {
   return k - 1;  // the last vertex repeats the first
 }
 
+// Where a fragment paints: the coverage mask, and for a translucent frame also each pixel's
+// transmittance, the product of (1 - alpha) over the fragments covering it, multiplied by `keep`
+// (1 - this fragment's alpha). Opaque frames leave `transmittance` null and only mark the mask.
+struct Paint {
+  std::uint8_t* coverage = nullptr;
+  double* transmittance = nullptr;
+  double keep = 0.0;
+};
+
 // Marks the pixels whose centre lies in the closed convex polygon hull[0..n) (pixel units, any
 // orientation) and returns their count. Each row's span comes from the polygon's crossings of the
 // row's centre line, so a row costs one pass over the (at most 14) edges plus one fill.
-int fill_hull(const ScreenPoint* hull, int n, int width_px, int height_px, std::uint8_t* coverage) {
+int fill_hull(const ScreenPoint* hull, int n, int width_px, int height_px, const Paint& paint) {
+  std::uint8_t* coverage = paint.coverage;
   double y_min = hull[0].y;
   double y_max = hull[0].y;
   for (int i = 1; i < n; ++i) {
@@ -95,6 +105,10 @@ int fill_hull(const ScreenPoint* hull, int n, int width_px, int height_px, std::
     const int c1 = static_cast<int>(col_hi);
     std::uint8_t* line = coverage + static_cast<std::ptrdiff_t>(row) * width_px;
     std::fill(line + c0, line + c1 + 1, std::uint8_t{1});
+    if (paint.transmittance) {
+      double* t = paint.transmittance + static_cast<std::ptrdiff_t>(row) * width_px;
+      for (int c = c0; c <= c1; ++c) t[c] *= paint.keep;
+    }
     own += c1 - c0 + 1;
   }
   return own;
@@ -120,7 +134,7 @@ Projection make_projection(const CameraPose& camera, int width_px, int height_px
 // Marks the pixels covered by one fragment's box, clipped at the near plane and projected, and
 // returns how many that box covers by itself.
 int rasterise(const Projection& pr, const CameraPose& camera, const FragmentState& f, int width_px,
-              int height_px, std::uint8_t* coverage) {
+              int height_px, const Paint& coverage) {
   const CameraBox box = camera_box(camera, f);
   // A non-finite state is reported by the simulation's own checks; it must not paint the screen.
   if (!box.finite()) return 0;
@@ -173,7 +187,7 @@ int rasterise(const Projection& pr, const CameraPose& camera, const FragmentStat
 // and projected as the box above is, and returns how many it covers by itself. `cam_vertices` and
 // `points` are the caller's scratch, so a step allocates nothing once they have grown.
 int rasterise_hull(const Projection& pr, const CameraPose& camera, const FragmentState& f,
-                   int width_px, int height_px, std::uint8_t* coverage,
+                   int width_px, int height_px, const Paint& coverage,
                    std::vector<Eigen::Vector3d>& cam_vertices, std::vector<ScreenPoint>& points) {
   hull_camera_vertices(camera, f, cam_vertices);
   for (const Eigen::Vector3d& v : cam_vertices) {
@@ -257,13 +271,29 @@ void OcclusionMetric::observe(const StepSnapshot& snap) {
   std::fill(coverage_.begin(), coverage_.end(), std::uint8_t{0});
   const double pixels = static_cast<double>(coverage_.size());
   const Projection pr = make_projection(snap.camera, width_px_, height_px_);
+  // A frame with opacities (fade) composites: a pixel is covered by 1 - prod(1 - alpha) of the
+  // fragments over it, and a fragment's own share counts by its alpha. Without them the mask
+  // alone is counted, as it always was, so opaque runs keep their numbers to the bit.
+  const bool translucent = !snap.opacity.empty();
+  assert(!translucent || snap.opacity.size() == snap.fragments.size());
+  if (translucent) transmittance_.assign(coverage_.size(), 1.0);
   int own_max = 0;
-  for (const FragmentState& f : snap.fragments) {
-    const int own = f.shape
-                        ? rasterise_hull(pr, snap.camera, f, width_px_, height_px_,
-                                         coverage_.data(), hull_vertices_, hull_points_)
-                        : rasterise(pr, snap.camera, f, width_px_, height_px_, coverage_.data());
+  double own_share_max = 0.0;
+  for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
+    const FragmentState& f = snap.fragments[i];
+    Paint paint{coverage_.data(), nullptr, 0.0};
+    double alpha = 1.0;
+    if (translucent) {
+      alpha = snap.opacity[i];
+      if (!(alpha > 0.0)) continue;  // invisible: nothing is drawn
+      paint.transmittance = transmittance_.data();
+      paint.keep = 1.0 - alpha;
+    }
+    const int own = f.shape ? rasterise_hull(pr, snap.camera, f, width_px_, height_px_, paint,
+                                             hull_vertices_, hull_points_)
+                            : rasterise(pr, snap.camera, f, width_px_, height_px_, paint);
     own_max = std::max(own_max, own);
+    own_share_max = std::max(own_share_max, own * alpha);
   }
 
   const auto count = [this](int x0, int x1, int y0, int y1) {
@@ -274,10 +304,25 @@ void OcclusionMetric::observe(const StepSnapshot& snap) {
     }
     return covered;
   };
-  const int covered = count(0, width_px_, 0, height_px_);
-  const int central = count(central_x0_, central_x1_, central_y0_, central_y1_);
+  const auto composite = [this](int x0, int x1, int y0, int y1) {
+    double covered = 0.0;
+    for (int row = y0; row < y1; ++row) {
+      const double* line = transmittance_.data() + static_cast<std::ptrdiff_t>(row) * width_px_;
+      for (int col = x0; col < x1; ++col) covered += 1.0 - line[col];
+    }
+    return covered;
+  };
   const double central_pixels =
       static_cast<double>(central_x1_ - central_x0_) * (central_y1_ - central_y0_);
+  if (translucent) {
+    viewport_share_.push_back(composite(0, width_px_, 0, height_px_) / pixels);
+    central_share_.push_back(composite(central_x0_, central_x1_, central_y0_, central_y1_) /
+                             central_pixels);
+    single_max_ = std::max(single_max_, own_share_max / pixels);
+    return;
+  }
+  const int covered = count(0, width_px_, 0, height_px_);
+  const int central = count(central_x0_, central_x1_, central_y0_, central_y1_);
   viewport_share_.push_back(covered / pixels);
   central_share_.push_back(central / central_pixels);
   single_max_ = std::max(single_max_, own_max / pixels);

@@ -10,6 +10,11 @@
 // the viewport [-1, 1]^2 in NDC mapping onto [0, width] x [0, height]. A pixel is covered when its
 // centre lies inside the hull or on its boundary (closed hull). Only the near plane and the side
 // planes clip; the far plane does not (a fragment beyond it is a speck, not an occluder).
+//
+// A frame with opacities (StepSnapshot::opacity, the `fade` strategy) counts each fragment by
+// its alpha: a pixel is covered by 1 - prod(1 - alpha) over the fragments whose hull holds its
+// centre (what blending them in any order gives), and the largest share one fragment covered is
+// its pixels times its alpha. An invisible fragment (alpha 0) covers nothing.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -46,7 +51,8 @@ class OcclusionMetric final : public RunObserver {
   int central_x1_px() const { return central_x1_; }
   int central_y0_px() const { return central_y0_; }
   int central_y1_px() const { return central_y1_; }
-  // The last observed step's coverage, row-major from the top row; 1 = covered.
+  // The last observed step's coverage, row-major from the top row; 1 = covered (by any fragment
+  // drawn, whatever its alpha).
   const std::vector<std::uint8_t>& coverage() const { return coverage_; }
 
  private:
@@ -60,6 +66,7 @@ class OcclusionMetric final : public RunObserver {
   int central_y0_ = 0;
   int central_y1_ = 0;
   std::vector<std::uint8_t> coverage_;          // reused every step, so a step allocates nothing
+  std::vector<double> transmittance_;           // per pixel, prod(1 - alpha): translucent frames
   std::vector<Eigen::Vector3d> hull_vertices_;  // a convex piece's, in camera space (scratch)
   std::vector<ScreenPoint> hull_points_;        // its clipped, projected points and hull (scratch)
   std::vector<double> viewport_share_;

@@ -91,6 +91,7 @@ const std::vector<SummaryField>& summary_field_table() {
       {"pushed_exits_right", &RunSummary::pushed_exits_right},
       {"pushed_exits_near", &RunSummary::pushed_exits_near},
       {"pushed_exits_stayed", &RunSummary::pushed_exits_stayed},
+      {"vanished_fragments", &RunSummary::vanished_fragments},
   };
   return cols;
 }

@@ -42,6 +42,8 @@ struct RunSummary {
   int exits_near = 0;    // through the near plane
   int exits_stayed = 0;  // still on screen at the end
   int near_misses = 0;   // passed within the near-miss distance without touching the near rectangle
+  // Fragments that faded below half opacity in view, or met the near plane invisible (fade).
+  int vanished_fragments = 0;
 
   // What the strategy did.
   int candidates_initial = 0;  // after the prediction at t = 0

@@ -15,7 +15,8 @@ RecordedFrame::RecordedFrame(const StepSnapshot& snap)
       forces(snap.forces.begin(), snap.forces.end()),
       candidates(snap.candidates.begin(), snap.candidates.end()),
       capped(snap.capped.begin(), snap.capped.end()),
-      camera_hits(snap.camera_hits.begin(), snap.camera_hits.end()) {}
+      camera_hits(snap.camera_hits.begin(), snap.camera_hits.end()),
+      opacity(snap.opacity.begin(), snap.opacity.end()) {}
 
 StepSnapshot RecordedFrame::view() const {
   StepSnapshot s;
@@ -29,6 +30,7 @@ StepSnapshot RecordedFrame::view() const {
   s.candidates = candidates;
   s.capped = capped;
   s.camera_hits = camera_hits;
+  s.opacity = opacity;
   return s;
 }
 

@@ -25,6 +25,7 @@ struct RecordedFrame {
   std::vector<int> candidates;
   std::vector<int> capped;
   std::vector<int> camera_hits;
+  std::vector<float> opacity;  // empty: all opaque
 
   explicit RecordedFrame(const StepSnapshot& snap);
   // A snapshot whose spans point into this frame (valid while it lives, unmoved).

@@ -380,14 +380,25 @@ Image FrameRenderer::render(const StepSnapshot& snap) {
   Image image(style_.width_px, style_.height_px);
   raster_.begin(image, snap.camera);
   draw_background(image, snap.camera);
+  // A faded fragment (fade) is drawn dithered by its opacity; an invisible one not at all.
+  const auto opacity = [&snap](std::size_t i) {
+    return snap.opacity.empty() ? 1.0f : snap.opacity[i];
+  };
   for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
+    const float alpha = opacity(i);
+    if (!(alpha > 0.0f)) continue;
+    raster_.set_opacity(alpha);
     draw_faces(static_cast<int>(i), snap.fragments[i]);
   }
+  raster_.set_opacity(1.0f);
   // Overlays, over every fragment.
   const FrameOverlays& o = style_.overlays;
   const int count = static_cast<int>(snap.fragments.size());
   if (o.cuts) {
-    for (const FragmentState& f : snap.fragments) draw_cut(image, f);
+    // Only what is drawn can show a cut.
+    for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
+      if (opacity(i) > 0.0f) draw_cut(image, snap.fragments[i]);
+    }
   }
   if (o.candidates) {
     for (const int i : snap.candidates) {

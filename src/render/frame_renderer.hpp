@@ -5,7 +5,9 @@
 // Lambert shading and the fragment's own colour, clipped at that step's near plane with back faces
 // culled (a fragment crossing it shows its cut: a hole), and optional overlays drawn on top: the
 // edge candidates' outlines, the applied forces as arrows, the near plane's cut through each
-// fragment it crosses and the occlusion metric's central region.
+// fragment it crosses and the occlusion metric's central region. A snapshot with opacities
+// (the `fade` strategy) has each fragment drawn dithered by its opacity (Rasterizer::set_opacity);
+// an invisible one is not drawn and shows no cut.
 
 #include <Eigen/Core>
 #include <cstdint>

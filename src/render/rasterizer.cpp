@@ -115,6 +115,15 @@ void Rasterizer::fill_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& 
   }
 }
 
+bool dither_shows(int col, int row, float opacity) {
+  // The 4x4 Bayer matrix: neighbouring thresholds far apart, so any opacity gives an even,
+  // regular pattern rather than clumps.
+  static constexpr int kBayer[4][4] = {
+      {0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
+  const int b = kBayer[row & 3][col & 3];
+  return opacity * 16.0f > static_cast<float>(b) + 0.5f;
+}
+
 void Rasterizer::fill_projected(const ScreenPoint* p, const double* inv_z, Rgb colour) {
   const double area = edge(p[0], p[1], p[2].x, p[2].y);
   if (!(std::abs(area) > 0.0) || !std::isfinite(area)) return;  // edge-on or degenerate
@@ -158,7 +167,7 @@ void Rasterizer::fill_projected(const ScreenPoint* p, const double* inv_z, Rgb c
       const double w2 = c[2] + slope[2] * xc;
       const float d =
           static_cast<float>((w0 * inv_z[0] + w1 * inv_z[1] + w2 * inv_z[2]) * inv_area);
-      if (d > depth[col]) {
+      if (d > depth[col] && (opacity_ >= 1.0f || dither_shows(col, row, opacity_))) {
         depth[col] = d;
         image_->set(col, row, colour);
       }

@@ -48,6 +48,15 @@ class Rasterizer {
     return projection_.pixel_direction(col, row);
   }
 
+  // The opacity the next triangles are drawn with, in [0, 1]: below 1 a triangle is drawn
+  // dithered, as Unreal's and Godot's distance fades are, through a 4x4 ordered (Bayer) matrix
+  // fixed to the screen: a pixel is written (colour and depth, as an opaque one) only where the
+  // opacity exceeds its threshold (b + 0.5) / 16, b the matrix's entry 0..15, so a share of
+  // about `opacity` of the pixels shows and the rest show what lies behind. 1 (the default)
+  // draws every pixel as before.
+  void set_opacity(float opacity) { opacity_ = opacity; }
+  float opacity() const { return opacity_; }
+
   // Clips the camera-space triangle at the near and far planes and fills what is left, each
   // pixel only where it is nearer than what the depth buffer holds. Both windings are drawn.
   void fill_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
@@ -84,7 +93,11 @@ class Rasterizer {
   int height_ = 0;
   PixelProjection projection_;
   std::vector<float> inverse_depth_;  // reused from frame to frame
+  float opacity_ = 1.0f;
 };
+
+// Whether the ordered dither draws pixel (col, row) of a surface of opacity `opacity`.
+bool dither_shows(int col, int row, float opacity);
 
 // A 2-D line from a to b (pixel coordinates, clipped to the image) with a square pen.
 void draw_line(Image& image, ScreenPoint a, ScreenPoint b, Rgb colour, int thickness_px = 1);

@@ -66,8 +66,10 @@ bool has_occlusion(const Evaluation& e) {
   return !e.occlusion_per_step.empty();
 }
 
+// The failures of the thesis's goals (best_for_thesis_goals): a fragment cut by the near plane,
+// one that hits the camera body and one that vanishes on screen (fade).
 int hits(const RunSummary& s) {
-  return s.near_fragments + s.camera_hit_fragments;
+  return s.near_fragments + s.camera_hit_fragments + s.vanished_fragments;
 }
 
 // "a", "a and b", "a, b and c".
@@ -222,20 +224,25 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   const RunSummary& s = b.summary;
   if (hits(s) > 0) {
     std::string p =
-        "No strategy met the thesis's goals on this scene (no near-plane intersections and no "
-        "camera hits): each let fragments through. The closest, " +
+        "No strategy met the thesis's goals on this scene (no near-plane intersections, no "
+        "camera hits and no fragment vanishing on screen): each let fragments through or made "
+        "them disappear. The closest, " +
         s.strategy + ": " +
         count(s.near_fragments, "near-plane intersection", "near-plane intersections") + ", " +
         count(s.camera_hit_fragments, "camera hit", "camera hits");
+    if (s.vanished_fragments > 0) {
+      p += ", " + count(s.vanished_fragments, "fragment", "fragments") + " vanished";
+    }
     if (b.has_deviation) p += ", mean deviation " + fixed_text(s.deviation_mean_m, 3) + " m";
     paragraphs.push_back(p + ".");
     return paragraphs;
   }
   const bool alone = runs.size() - (none ? 1 : 0) == 1;
   std::string p = s.strategy +
-                  (alone ? " met the thesis's goals (no near-plane intersections or camera hits)"
-                         : " met the thesis's goals best (no near-plane intersections or camera "
-                           "hits, then the least deviation)") +
+                  (alone ? " met the thesis's goals (no near-plane intersections, camera hits "
+                           "or vanished fragments)"
+                         : " met the thesis's goals best (no near-plane intersections, camera "
+                           "hits or vanished fragments, then the least deviation)") +
                   ": 0 near-plane intersections, 0 camera hits";
   if (b.has_deviation) {
     p += ", mean deviation " + fixed_text(s.deviation_mean_m, 3) + " m (" +
@@ -272,6 +279,22 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   if (!also.empty()) {
     paragraphs.push_back(
         "Also free of intersections and camera hits, with more deviation: " + joined(also) + ".");
+  }
+  // A run that hides debris instead of steering it: what it saves at the lens and what it costs.
+  for (const Evaluation& e : runs) {
+    const RunSummary& o = e.summary;
+    if (o.vanished_fragments == 0) continue;
+    std::string v = o.strategy + " made " + count(o.vanished_fragments, "fragment", "fragments") +
+                    " vanish in view (faded below half opacity, or invisible at the near plane), "
+                    "the debris that \"suddenly disappears\" the thesis sets out to avoid: it "
+                    "counts as a failure of the goals, as a cut does. It left " +
+                    count(o.near_fragments, "near-plane intersection", "near-plane intersections") +
+                    " and " + count(o.camera_hit_fragments, "camera hit", "camera hits");
+    if (has_occlusion(e)) {
+      v += "; central occlusion up to " + percent(o.central_occlusion_max) + "% (mean " +
+           percent(o.central_occlusion_mean) + "%), faded fragments counted by their opacity";
+    }
+    paragraphs.push_back(v + ".");
   }
   return paragraphs;
 }

@@ -67,8 +67,9 @@ std::string exits_text(const RunSummary& s) {
          std::to_string(s.exits_near) + "/" + std::to_string(s.exits_stayed);
 }
 
+// The failures of the thesis's goals: cut, hit or vanished (best_for_thesis_goals).
 int hits(const RunSummary& s) {
-  return s.near_fragments + s.camera_hit_fragments;
+  return s.near_fragments + s.camera_hit_fragments + s.vanished_fragments;
 }
 
 std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluation>& runs) {
@@ -111,9 +112,12 @@ std::string verdict(const std::vector<Evaluation>& runs, std::optional<std::size
   if (!best) return "";
   const RunSummary& s = runs[*best].summary;
   const int n = hits(s);
-  return "best for the thesis's goals (no intersections, then least deviation, then most near "
-         "misses): " +
-         s.strategy + " (" + (n == 0 ? "no" : std::to_string(n)) + " intersections" +
+  return "best for the thesis's goals (no intersections or vanished fragments, then least "
+         "deviation, then most near misses): " +
+         s.strategy + " (" +
+         (n == 0 ? "no intersections"
+                 : std::to_string(n) + (s.vanished_fragments > 0 ? " intersections or vanished"
+                                                                 : " intersections")) +
          (runs[*best].has_deviation ? ", mean deviation " + fixed_text(s.deviation_mean_m, 4) + " m"
                                     : std::string()) +
          ", " + std::to_string(s.near_misses) + " near misses)";
@@ -182,8 +186,15 @@ std::vector<ResultsColumn> results_columns(double near_miss_m) {
        .explanation = "fragments touching the camera body",
        .legend_key = "cam",
        .legend = "camera-body hits",
-       .legend_break = B::line,
+       .legend_break = B::comma,
        .cell = count_cell(&RunSummary::camera_hit_fragments)},
+      {.header = "vanished",
+       .explanation = "fragments that faded below half opacity in view or met the near plane "
+                      "invisible (fade); a failure of the thesis's goals, as a cut is",
+       .legend_key = "vanished",
+       .legend = "fragments faded out in view (`fade`)",
+       .legend_break = B::line,
+       .cell = count_cell(&RunSummary::vanished_fragments)},
       {.header = "dev_mean",
        .unit = "m",
        .explanation = "mean over fragments of the largest distance from the none run",

@@ -27,6 +27,9 @@ struct StepSnapshot {
   std::span<const int> capped;  // fragments whose force the cap reduced
   int guarded = 0;
   int deferred = 0;  // fragments a per-step budget left unsolved
+  // Each fragment's opacity in this frame (fade); empty: all opaque (every other strategy, and
+  // step 0, drawn before any strategy spoke).
+  std::span<const float> opacity;
   // What the physics saw in that step.
   std::span<const int> camera_hits;  // fragments that touched the camera's sensor volume
   int wall_contacts = 0;

@@ -153,6 +153,7 @@ RunTotals simulate(const Scene& scene, Strategy& strategy,
     snap.capped = out.capped;
     snap.guarded = out.guarded;
     snap.deferred = out.deferred;
+    snap.opacity = out.opacity;
     snap.camera_hits = world.camera_hits();
     snap.wall_contacts = world.wall_contacts();
     snap.physics_s = physics_s;

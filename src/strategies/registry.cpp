@@ -6,6 +6,7 @@
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
+#include "strategies/fade_strategy.hpp"
 #include "strategies/near_plane_strategy.hpp"
 #include "strategies/none_strategy.hpp"
 #include "strategies/wall_strategy.hpp"
@@ -67,6 +68,12 @@ const StrategyTable& strategy_table() {
           edge_min_param_spec(),
           [](const EdgeMinParams& p, const C&) { return std::make_unique<EdgeMinStrategy>(p); },
           &S::edge_min),
+      strategy_entry(
+          "fade",
+          "physics untouched; a fragment nearer the eye than start_m is drawn transparent in "
+          "proportion, invisible from end_m in (the engines' camera fade)",
+          fade_param_spec(),
+          [](const FadeParams& p, const C&) { return std::make_unique<FadeStrategy>(p); }),
   };
   return table;
 }

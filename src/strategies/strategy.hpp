@@ -50,6 +50,9 @@ struct StepOutput {
   int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
   // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
   int rejected_cheaply = 0;
+  // Each fragment's opacity in the frame after this step, 0 (invisible) to 1 (fade); empty: every
+  // fragment opaque, as for every strategy that draws fragments as they are.
+  std::vector<float> opacity;
 
   void clear() {
     forces.clear();
@@ -59,6 +62,7 @@ struct StepOutput {
     guarded = 0;
     deferred = 0;
     rejected_cheaply = 0;
+    opacity.clear();
   }
 };
 

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "experiments/evaluation.hpp"
 #include "metrics/trajectory_record.hpp"
@@ -131,57 +134,77 @@ std::uint64_t fnv1a(const std::string& bytes) {
   return h;
 }
 
-// summary.csv without the six pushed_exits_* columns (added with edge-min.edge_weights, before
-// the file's last two, z_fighting and ode_version): what the pins below held before those
-// columns existed, which must not move.
-std::string without_pushed_exits(const std::string& csv) {
-  std::string out;
+// summary.csv without the named columns: the pins of 2026-12-01's new columns (the six
+// pushed_exits_* of edge-min.edge_weights and vanished_fragments of fade) are checked against
+// the bytes the file held before them, which must not move.
+std::string without_columns(const std::string& csv, const std::vector<std::string>& names) {
+  std::vector<std::vector<std::string>> rows;
   std::size_t start = 0;
   while (start < csv.size()) {
     std::size_t end = csv.find('\n', start);
     if (end == std::string::npos) end = csv.size();
-    std::string line = csv.substr(start, end - start);
-    std::size_t cut = line.size();
-    for (int k = 0; k < 2; ++k) cut = line.rfind(',', cut - 1);
-    std::size_t from = cut;
-    for (int k = 0; k < 6; ++k) from = line.rfind(',', from - 1);
-    out += line.substr(0, from) + line.substr(cut) + (end < csv.size() ? "\n" : "");
+    std::vector<std::string> cells;
+    std::stringstream line(csv.substr(start, end - start));
+    for (std::string cell; std::getline(line, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
     start = end + 1;
+  }
+  std::vector<bool> keep(rows.front().size(), true);
+  for (std::size_t c = 0; c < keep.size(); ++c) {
+    for (const std::string& n : names) keep[c] = keep[c] && rows.front()[c] != n;
+  }
+  std::string out;
+  for (const auto& cells : rows) {
+    bool first_cell = true;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      if (!keep[c]) continue;
+      out += (first_cell ? "" : ",") + cells[c];
+      first_cell = false;
+    }
+    out += "\n";
   }
   return out;
 }
 
-// The default scene's summary.csv, pinned (whole, and without the pushed_exits_* columns, which
-// came with edge-min.edge_weights on 2026-12-01 and moved only the whole file's hash). A change of
-// this hash means the simulation, a strategy or a metric now gives different numbers for the same
-// scene and seed: if that is intended, rerun `fragsim compare --scene data/scenes/front.ini --csv
-// DIR`, check the table, and update the constant (and the README's table) in the same commit.
+std::string without_new_columns(const std::string& csv) {
+  return without_columns(
+      csv, {"pushed_exits_top", "pushed_exits_bottom", "pushed_exits_left", "pushed_exits_right",
+            "pushed_exits_near", "pushed_exits_stayed", "vanished_fragments"});
+}
+
+// The default scene's summary.csv, pinned (whole, and without 2026-12-01's new columns, which
+// moved only the whole file's hash). A change of this hash means the simulation, a strategy or a
+// metric now gives different numbers for the same scene and seed: if that is intended, rerun
+// `fragsim compare --scene data/scenes/front.ini --csv DIR`, check the table, and update the
+// constant (and the README's table) in the same commit.
 TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
                                      "near-plane", "edge", "edge-min"};
   const std::string csv = summary_csv(scene, compare(scene, all, true, nullptr, 2));
-  EXPECT_EQ(fnv1a(without_pushed_exits(csv)), 0xa567d4458e84c8beull) << csv;
-  EXPECT_EQ(fnv1a(csv), 0x7c0f420b46991105ull) << csv;
+  EXPECT_EQ(fnv1a(without_new_columns(csv)), 0xa567d4458e84c8beull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0xb058436c1cdd8039ull) << csv;
 }
 
 // The first edge-min, by name: camera_model = constant must give what it gave before the robust
 // models existed (the default scene's whole summary hashed 0xc9daf5bd1f5f9e15 then; its edge-min
 // part hashed 0x3a37af8689eda96b). Since the look-ahead stops at the ground instead of the scene's
-// end and summary.csv has a `deferred` column, it is 0x50a3f6ec292999a9: near 0, cam 0, dev_mean
-// 0.0720 m, dev_max 7.223 m, impulse 19.64 Ns, capped 8 as before (docs/camera_models.md,
-// section 8).
+// end and summary.csv has a `deferred` column, it was 0x50a3f6ec292999a9: near 0, cam 0,
+// dev_mean 0.0720 m, dev_max 7.223 m, impulse 19.64 Ns, capped 8 as before (docs/camera_models.md,
+// section 8); with the `vanished_fragments` column (0) it is 0xf035873d9a7a04eb, the same bytes
+// otherwise.
 TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
   scene.edge_min.camera_model = CameraModel::kConstant;
   const std::string csv = summary_csv(scene, compare(scene, {"edge-min"}, true, nullptr, 2));
-  EXPECT_EQ(fnv1a(without_pushed_exits(csv)), 0x50a3f6ec292999a9ull) << csv;
-  EXPECT_EQ(fnv1a(csv), 0x36d744fb94ecccb7ull) << csv;
+  EXPECT_EQ(fnv1a(without_new_columns(csv)), 0x50a3f6ec292999a9ull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0x53b4d51e67080ea7ull) << csv;
 }
 
 // The shipped Voronoi scene (front.ini's set-up, 1,000 cells): its summary pinned the same way,
 // and the verdict it supports checked in numbers: edge-min keeps every piece off the lens and
 // the camera body while `none` lets them through (README, "Debris as a fracture tool makes it").
+// 0xd3e597a857a49a5c before the `vanished_fragments` column, the same bytes otherwise.
 TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/voronoi.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
@@ -193,8 +216,30 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   EXPECT_EQ(runs.back().summary.near_fragments, 0);
   EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
-  EXPECT_EQ(fnv1a(without_pushed_exits(csv)), 0xd3e597a857a49a5cull) << csv;
-  EXPECT_EQ(fnv1a(csv), 0x9b0e73fec116bc59ull) << csv;
+  EXPECT_EQ(fnv1a(without_new_columns(csv)), 0xd3e597a857a49a5cull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0x5b329f238d01f235ull) << csv;
+}
+
+// `fade` on the default scene, pinned, with the numbers the README reads: physics untouched (no
+// deviation, the camera body hit by the same 34 fragments as without control), no fragment drawn
+// cut at the near plane, and 111 vanished in view.
+TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
+  const std::vector<Evaluation> runs = compare(scene, {"fade"}, true, nullptr, 2);
+  ASSERT_EQ(runs.size(), 1u);
+  const RunSummary& s = runs[0].summary;
+  EXPECT_EQ(s.near_fragments, 0);
+  EXPECT_EQ(s.camera_hit_fragments, 34);
+  EXPECT_EQ(s.vanished_fragments, 111);
+  EXPECT_EQ(s.deviation_max_m, 0.0);
+  EXPECT_EQ(s.impulse_Ns, 0.0);
+  const std::string csv = summary_csv(scene, runs);
+  EXPECT_EQ(fnv1a(without_columns(
+                csv, {"pushed_exits_top", "pushed_exits_bottom", "pushed_exits_left",
+                      "pushed_exits_right", "pushed_exits_near", "pushed_exits_stayed"})),
+            0x7ce12e61cc298ed1ull)
+      << csv;
+  EXPECT_EQ(fnv1a(csv), 0x8a80feaf22367510ull) << csv;
 }
 
 }  // namespace

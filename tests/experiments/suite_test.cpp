@@ -225,16 +225,17 @@ TEST(SuiteCsv, OneRowPerRunAndVariantWithTheEntryFields) {
   std::getline(in, line);
   EXPECT_EQ(line,
             "scene,object.distance_m,explosion.aim,explosion.toward_camera_mps,seed,mode,strategy,"
-            "near_fragments,camera_hit_fragments,deviation_mean_m,near_misses,strategy_ms_median");
+            "near_fragments,camera_hit_fragments,vanished_fragments,deviation_mean_m,near_misses,"
+            "strategy_ms_median");
   std::getline(in, line);
-  EXPECT_EQ(line, "close,1.5,future,6,1,path,none,2,1,0,10,0");
+  EXPECT_EQ(line, "close,1.5,future,6,1,path,none,2,1,0,0,10,0");
   std::getline(in, line);
-  EXPECT_EQ(line, "close,1.5,future,6,1,path,edge,0,0,0.5,6,0.2");
+  EXPECT_EQ(line, "close,1.5,future,6,1,path,edge,0,0,0,0.5,6,0.2");
   int rows = 2;
   while (std::getline(in, line)) {
     ++rows;
     if (rows == 5) {
-      EXPECT_EQ(line, "close,2.2,present,9,3,player-instant,none,1,0,0,6,0");
+      EXPECT_EQ(line, "close,2.2,present,9,3,player-instant,none,1,0,0,0,6,0");
     }
   }
   EXPECT_EQ(rows, 6);

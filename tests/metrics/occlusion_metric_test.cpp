@@ -471,3 +471,70 @@ TEST(OcclusionMetric, TriangularSlabCoversItsProjectedTriangle) {
 
 }  // namespace
 }  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// One step with these fragments drawn at these opacities (a fade frame).
+Shares measure_faded(const MetricsDef& def, const CameraPose& cam,
+                     const std::vector<FragmentState>& frags, const std::vector<float>& opacity) {
+  OcclusionMetric m(def);
+  const std::vector<FragmentState> none;
+  m.begin(run_info(static_cast<int>(frags.size()), 1), snapshot(0, cam, none));
+  StepSnapshot s = snapshot(1, cam, frags);
+  s.opacity = opacity;
+  m.observe(s);
+  RunSummary r;
+  m.fill(r);
+  return {r.occlusion_mean, r.central_occlusion_mean, r.single_fragment_occlusion_max};
+}
+
+// The plate of FacingPlateCoversItsProjectedSquare: 676 pixels of the 100 x 100 grid.
+constexpr double kPlatePixels = 676.0;
+
+TEST(OcclusionMetric, TwoHalfTransparentFragmentsCompositeToThreeQuarters) {
+  const FragmentState a = box({0, 0, -2}, {0.5, 0.5, 0.01});
+  // Alone, opaque: the pixel rule's 676 pixels.
+  const Shares alone = measure(grid(100, 0.5), square_camera(), {a});
+  ASSERT_EQ(alone.viewport, kPlatePixels / 10000.0);
+  // Half transparent: half of each pixel.
+  const Shares half = measure_faded(grid(100, 0.5), square_camera(), {a}, {0.5f});
+  EXPECT_NEAR(half.viewport, 0.5 * kPlatePixels / 10000.0, 1e-15);
+  EXPECT_NEAR(half.single, 0.5 * kPlatePixels / 10000.0, 1e-15);
+  // The same plate twice at 0.5: 1 - (1 - 0.5)(1 - 0.5) = 0.75 on every one of its pixels.
+  const Shares twice = measure_faded(grid(100, 0.5), square_camera(), {a, a}, {0.5f, 0.5f});
+  EXPECT_NEAR(twice.viewport, 0.75 * kPlatePixels / 10000.0, 1e-15);
+  EXPECT_NEAR(twice.single, 0.5 * kPlatePixels / 10000.0, 1e-15);
+  // Two that overlap in part: 0.5 where one covers, 0.75 on the overlap. The counts come from
+  // the opaque metric (the union and each alone), the overlap by inclusion-exclusion.
+  const FragmentState c = box({0.3, 0, -2}, {0.5, 0.5, 0.01});
+  const double n_a = measure(grid(100, 0.5), square_camera(), {a}).viewport * 10000.0;
+  const double n_c = measure(grid(100, 0.5), square_camera(), {c}).viewport * 10000.0;
+  const double n_union = measure(grid(100, 0.5), square_camera(), {a, c}).viewport * 10000.0;
+  const double n_overlap = n_a + n_c - n_union;
+  ASSERT_GT(n_overlap, 100.0);
+  ASSERT_LT(n_overlap, n_a);
+  const Shares part = measure_faded(grid(100, 0.5), square_camera(), {a, c}, {0.5f, 0.5f});
+  EXPECT_NEAR(part.viewport, (0.5 * (n_union - n_overlap) + 0.75 * n_overlap) / 10000.0, 1e-14);
+}
+
+TEST(OcclusionMetric, InvisibleFragmentCoversNothingAndOpaqueFrameIsUnchanged) {
+  const FragmentState a = box({0, 0, -2}, {0.5, 0.5, 0.01});
+  const FragmentState c = box({0.3, 0.1, -3}, {0.4, 0.3, 0.2});
+  const Shares none = measure_faded(grid(100, 0.5), square_camera(), {a}, {0.0f});
+  EXPECT_EQ(none.viewport, 0.0);
+  EXPECT_EQ(none.central, 0.0);
+  EXPECT_EQ(none.single, 0.0);
+  // Opacities of 1 give the opaque metric's numbers to the bit (1 - prod(1 - 1) is exactly 1).
+  const Shares opaque = measure(grid(100, 0.5), square_camera(), {a, c});
+  const Shares ones = measure_faded(grid(100, 0.5), square_camera(), {a, c}, {1.0f, 1.0f});
+  EXPECT_EQ(ones.viewport, opaque.viewport);
+  EXPECT_EQ(ones.central, opaque.central);
+  EXPECT_EQ(ones.single, opaque.single);
+  // A fragment at 0.25 over an opaque one adds nothing where the opaque one already covers.
+  const Shares over = measure_faded(grid(100, 0.5), square_camera(), {a, a}, {1.0f, 0.25f});
+  EXPECT_EQ(over.viewport, kPlatePixels / 10000.0);
+}
+
+}  // namespace
+}  // namespace fragsim

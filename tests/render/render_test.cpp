@@ -715,3 +715,75 @@ TEST(CompareSheet, WritesOneRowPerStrategyAndChecksItsOptions) {
 
 }  // namespace
 }  // namespace fragsim
+
+namespace fragsim {
+namespace {
+
+// --- Faded fragments (the fade strategy's opacities) --------------------------------------------
+
+Image render_faded(const std::vector<FragmentState>& frags, const std::vector<float>& opacity) {
+  FrameRenderer r(sky_scene(), square_style());
+  StepSnapshot s = snapshot(square_camera(), frags);
+  s.opacity = opacity;
+  return r.render(s);
+}
+
+TEST(Rasterizer, OrderedDitherShowsTheOpacitysShareOfEachFourByFourBlock) {
+  // 16 thresholds (b + 0.5) / 16: an opacity of k / 16 shows exactly k pixels of every block.
+  for (int k = 0; k <= 16; ++k) {
+    int shown = 0;
+    for (int row = 0; row < 4; ++row) {
+      for (int col = 0; col < 4; ++col) shown += dither_shows(col + 8, row + 12, k / 16.0f);
+    }
+    EXPECT_EQ(shown, k) << k;
+  }
+  // Half: a checkerboard in each 2 x 2 (neighbours differ), so it reads as see-through.
+  EXPECT_NE(dither_shows(0, 0, 0.5f), dither_shows(1, 0, 0.5f));
+  EXPECT_NE(dither_shows(0, 0, 0.5f), dither_shows(0, 1, 0.5f));
+}
+
+TEST(Frame, FadedFragmentIsDrawnDitheredByItsOpacity) {
+  // A plate in front of a wall: where the dither skips the plate's pixel, the wall shows.
+  const FragmentState plate = box(-0.5, 0.5, -0.5, 0.5, 2.0, 2.001);
+  const FragmentState wall = box(-3, 3, -3, 3, 4.0, 4.1);
+  const Rgb plate_colour = shaded_colour(fragment_colour(0), kTowardCamera);
+  const Rgb wall_colour = shaded_colour(fragment_colour(1), kTowardCamera);
+  const Image opaque = render({plate, wall});
+  // Opacity 1 draws exactly what no opacity draws.
+  const Image ones = render_faded({plate, wall}, {1.0f, 1.0f});
+  EXPECT_EQ(ones.bytes(), opaque.bytes());
+  // At 0.25, 4 of every 16 pixels inside the plate's square (columns and rows 75..124, whole
+  // 4 x 4 blocks from 76 to 123) are the plate's; the rest show the wall behind it.
+  const Image quarter = render_faded({plate, wall}, {0.25f, 1.0f});
+  int plate_px = 0;
+  int wall_px = 0;
+  for (int y = 76; y < 124; ++y) {
+    for (int x = 76; x < 124; ++x) {
+      ASSERT_EQ(opaque.at(x, y), plate_colour) << x << "," << y;
+      plate_px += quarter.at(x, y) == plate_colour;
+      wall_px += quarter.at(x, y) == wall_colour;
+    }
+  }
+  EXPECT_EQ(plate_px, 48 * 48 / 4);
+  EXPECT_EQ(wall_px, 48 * 48 * 3 / 4);
+  // Invisible: the plate is not drawn at all, not even its cut.
+  const Image gone = render_faded({plate, wall}, {0.0f, 1.0f});
+  const FragmentState behind_eye = box(-0.5, 0.5, -0.5, 0.5, -3.0, -2.999);  // never drawn
+  EXPECT_EQ(gone.bytes(), render({behind_eye, wall}).bytes());
+}
+
+TEST(FrameRecorder, KeepsTheOpacities) {
+  const Scene scene = test::single_fragment({0.0, 1.6, -5.0}, 10.0);
+  FrameRecorder frames({0, 27, 30});
+  EvaluationOptions opts;
+  opts.occlusion = false;
+  opts.extra = {&frames};
+  evaluate(scene, "fade", opts);
+  EXPECT_TRUE(frames.frame("fade", 0)->opacity.empty());  // step 0: before the strategy spoke
+  ASSERT_EQ(frames.frame("fade", 27)->opacity.size(), 1u);
+  EXPECT_NEAR(frames.frame("fade", 27)->opacity[0], 0.2 / 0.75, 1e-6);  // 0.45 m from the eye
+  EXPECT_EQ(frames.frame("fade", 30)->view().opacity[0], 0.0f);
+}
+
+}  // namespace
+}  // namespace fragsim

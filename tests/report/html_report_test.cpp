@@ -227,6 +227,31 @@ TEST(HtmlReport, ReadingSaysWhenNoStrategyMetTheGoals) {
   EXPECT_NE(only_none.find("Only none ran"), std::string::npos) << only_none;
 }
 
+// fade keeps the near plane clear but makes debris vanish: a failure of the goals, named with
+// its count, while edge-min, with more deviation, is the best.
+TEST(HtmlReport, ReadingCountsVanishedFragmentsAsAFailure) {
+  Evaluation fade = made_run("fade", 0, 2, 0.0, 0.8);
+  fade.summary.vanished_fragments = 40;
+  const std::vector<Evaluation> runs{made_run("none", 18, 34, 0.0, 0.963), fade,
+                                     made_run("edge-min", 0, 0, 0.072, 0.939)};
+  const std::string text = all_text(report_reading(runs));
+  EXPECT_NE(text.find("edge-min met the thesis's goals best"), std::string::npos) << text;
+  EXPECT_NE(text.find("fade made 40 fragments vanish in view"), std::string::npos) << text;
+  EXPECT_NE(text.find("It left 0 near-plane intersections and 2 camera hits; central occlusion "
+                      "up to 80.0% (mean 20.0%)"),
+            std::string::npos)
+      << text;
+  // Alone against none, fade has not met the goals: it is the closest, with its vanished count.
+  Evaluation clean_fade = made_run("fade", 0, 0, 0.0, 0.8);
+  clean_fade.summary.vanished_fragments = 40;
+  const std::string alone = all_text(report_reading({made_run("none", 18, 34, 0.0), clean_fade}));
+  EXPECT_NE(alone.find("No strategy met the thesis's goals"), std::string::npos) << alone;
+  EXPECT_NE(alone.find("The closest, fade: 0 near-plane intersections, 0 camera hits, 40 "
+                       "fragments vanished"),
+            std::string::npos)
+      << alone;
+}
+
 TEST(HtmlReport, EscapesSceneAndStrategyNames) {
   Scene scene;
   scene.name = "<b>bold</b> & \"quoted\"";
@@ -328,7 +353,7 @@ TEST(HtmlReport, SameSceneAndSeedWriteTheSameBytes) {
   // The page's table as CSV beside it, linked from the page, as repeatable as the page.
   const std::string table = read_all(a / "table.csv");
   EXPECT_EQ(table, read_all(b / "table.csv"));
-  EXPECT_EQ(table.rfind("strategy,near,near_st,cam,dev_mean_m,", 0), 0u) << table;
+  EXPECT_EQ(table.rfind("strategy,near,near_st,cam,vanished,dev_mean_m,", 0), 0u) << table;
   EXPECT_EQ(table.find("_ms"), std::string::npos) << table;
   EXPECT_NE(page.find("<a href=\"table.csv\">"), std::string::npos);
   // The page's image is the sheet beside it, at its size.

@@ -89,10 +89,11 @@ std::vector<std::string> csv_cells(const std::string& line) {
 TEST(ResultsTable, ColumnsInOrder) {
   std::vector<std::string> titles;
   for (const ResultsColumn& c : results_columns(1.0)) titles.push_back(column_title(c));
-  const std::vector<std::string> want{
-      "strategy",  "near",       "near_st",   "cam",        "dev_mean_m",        "dev_max_m",
-      "dev>1cm_%", "occ_mean_%", "occ_max_%", "ctr_max_%",  "exits T/B/L/R/N/S", "miss",
-      "cand0",     "impulse_Ns", "capped",    "near_min_m", "phys_ms",           "strat_ms"};
+  const std::vector<std::string> want{"strategy",   "near",       "near_st",    "cam",
+                                      "vanished",   "dev_mean_m", "dev_max_m",  "dev>1cm_%",
+                                      "occ_mean_%", "occ_max_%",  "ctr_max_%",  "exits T/B/L/R/N/S",
+                                      "miss",       "cand0",      "impulse_Ns", "capped",
+                                      "near_min_m", "phys_ms",    "strat_ms"};
   EXPECT_EQ(titles, want);
   for (const ResultsColumn& c : results_columns(1.0)) {
     EXPECT_FALSE(c.explanation.empty()) << c.header;
@@ -113,31 +114,18 @@ TEST(ResultsTable, TerminalPageAndCsvShowTheSameCells) {
   const ResultsTable table = results_table(hand_scene(), runs);
   ASSERT_EQ(table.rows.size(), runs.size());
 
-  const std::vector<std::string> want_first{"edge-min",
-                                            "3",
-                                            "7",
-                                            "2",
-                                            "0.0820",
-                                            "8.729",
-                                            "3.8",
-                                            "7.9",
-                                            "0.0",
-                                            "96.3",
-                                            "749/489/240/233/17/0",
-                                            "616",
-                                            "51",
-                                            "28.64",
-                                            "4",
-                                            "0.100",
-                                            "0.938",
-                                            "0.035"};
+  const std::vector<std::string> want_first{"edge-min", "3",      "7",     "2",
+                                            "0",        "0.0820", "8.729", "3.8",
+                                            "7.9",      "0.0",    "96.3",  "749/489/240/233/17/0",
+                                            "616",      "51",     "28.64", "4",
+                                            "0.100",    "0.938",  "0.035"};
   EXPECT_EQ(table.rows[0], want_first);
-  EXPECT_EQ(table.rows[1][4], "-");  // no deviation reference
-  EXPECT_EQ(table.rows[1][6], "-");
-  EXPECT_EQ(table.rows[2][7], "-");  // occlusion not measured
-  EXPECT_EQ(table.rows[2][9], "-");
-  EXPECT_EQ(table.rows[3][4], "nan");
-  EXPECT_EQ(table.rows[3][13], "inf");
+  EXPECT_EQ(table.rows[1][5], "-");  // no deviation reference
+  EXPECT_EQ(table.rows[1][7], "-");
+  EXPECT_EQ(table.rows[2][8], "-");  // occlusion not measured
+  EXPECT_EQ(table.rows[2][10], "-");
+  EXPECT_EQ(table.rows[3][5], "nan");
+  EXPECT_EQ(table.rows[3][14], "inf");
 
   const std::vector<std::string> text = lines(results_text(table));
   const std::string html = results_html(table);
@@ -168,7 +156,8 @@ TEST(ResultsTable, TerminalLegendIsTheReadmeText) {
   const ResultsTable table = results_table(hand_scene(), {hand_run("none")});
   EXPECT_EQ(legend_text(table, true, true),
             "near: fragments meeting the near rectangle (swept), near_st: fragment-steps, cam: "
-            "camera-body hits;\ndev: deviation from the `none` run; occ/ctr: screen and central "
+            "camera-body hits, vanished: fragments faded out in view (`fade`);\ndev: deviation "
+            "from the `none` run; occ/ctr: screen and central "
             "share covered; exits: Top/Bottom/Left/Right/Near/Stayed;\nmiss: near misses within "
             "1.00 m; cand0: edge candidates at t = 0; capped: forces cut by a_max; phys/strat: "
             "median per step.");
@@ -224,14 +213,30 @@ TEST(ResultsTable, BestRowOnlyWhenTheGoalsWereMet) {
   EXPECT_EQ(*met.best_row, 1u);
   EXPECT_NE(results_html(met).find("<tr class=\"best\"><td>clean</td>"), std::string::npos);
   EXPECT_EQ(met.verdict,
-            "best for the thesis's goals (no intersections, then least deviation, then most near "
-            "misses): clean (no intersections, mean deviation 0.0820 m, 616 near misses)");
+            "best for the thesis's goals (no intersections or vanished fragments, then least "
+            "deviation, then most near misses): clean (no intersections, mean deviation 0.0820 m, "
+            "616 near misses)");
 
   const ResultsTable missed = results_table(hand_scene(), {none, hand_run("leaky")});
   EXPECT_FALSE(missed.best_row);
   EXPECT_EQ(results_html(missed).find("class=\"best\""), std::string::npos);
   EXPECT_NE(missed.verdict.find("leaky (5 intersections"), std::string::npos) << missed.verdict;
   EXPECT_TRUE(results_table(hand_scene(), {none}).verdict.empty());
+
+  // A fragment that vanishes fails the goals as a cut does: the clean run with one vanished
+  // fragment is no longer best; with less deviation it still loses to one that keeps them all.
+  Evaluation faded = clean;
+  faded.summary.strategy = "faded";
+  faded.summary.vanished_fragments = 1;
+  faded.summary.deviation_mean_m = 0.0;
+  const ResultsTable both = results_table(hand_scene(), {none, faded, clean});
+  ASSERT_TRUE(both.best_row);
+  EXPECT_EQ(*both.best_row, 2u);
+  const ResultsTable alone = results_table(hand_scene(), {none, faded});
+  EXPECT_FALSE(alone.best_row);
+  EXPECT_NE(alone.verdict.find("faded (1 intersections or vanished"), std::string::npos)
+      << alone.verdict;
+  EXPECT_EQ(alone.rows[1][4], "1");
 }
 
 TEST(ResultsTable, EscapesAndQuotesNames) {

@@ -112,7 +112,7 @@ TEST(Registry, TheToolsTableDoesNotKnowTheTestStrategy) {
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(),
                  "unknown strategy 'probe' (known: none, wall, deflect-all, near-plane, edge, "
-                 "edge-min)");
+                 "edge-min, fade)");
   }
 }
 
