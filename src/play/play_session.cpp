@@ -114,6 +114,9 @@ class PlaySession::FlightObserver final : public RunObserver {
     while (hud_.paused) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       redraw = handle_events();
+      // The camera stands still while paused: a mouse moved meanwhile turns nothing.
+      s_.held_.mouse_yaw_rad = 0.0;
+      s_.held_.mouse_pitch_rad = 0.0;
       if (redraw || !hud_.paused) draw(snap, false);
       if (!hud_.paused) {  // the clock starts again from here
         wall_base_ = Clock::now();
