@@ -61,7 +61,7 @@ play_pid=$!
 window="$(timeout 120 xdotool search --sync --onlyvisible --name '^fragsim play' | head -n1)" ||
   fail "no play window appeared"
 [ -n "$window" ] || fail "no play window appeared"
-xdotool windowfocus --sync "$window"
+timeout 60 xdotool windowfocus --sync "$window" || fail "could not focus the play window"
 xdotool mousemove --window "$window" 320 180
 
 # The route: 1 s forward, then 0.5 s strafing right, then 0.5 s strafing right while turning.
