@@ -7,6 +7,7 @@
 #   time_vs_error.{txt,csv}, pareto.png
 #                                   fragsim bench on the default scene (3 timed runs each)
 #   compare.txt                     fragsim compare on the default scene, all metrics, timed
+#   play.txt                        fragsim play's frame at 640x360 (--bench-frames, 3 runs each)
 #   scale_curve.csv, scale_curve.png
 #                                   time per step and peak memory, 1k to 100k fragments
 # Run it on an otherwise idle machine: medians are robust to a little noise, not to a busy core.
@@ -40,6 +41,13 @@ TIMEFORMAT="compare wall %R s"
 for i in 1 2 3; do
   { time "$bin/fragsim" compare --scene data/scenes/front.ini >/dev/null; } 2>&1
 done | tee "$out/compare.txt"
+
+echo "== play: a frame's parts, scripted route, no window"
+for i in 1 2 3; do
+  for s in edge-min none; do
+    echo "$s: $("$bin/fragsim" play --scene data/scenes/front.ini --bench-frames 300 --strategy "$s" | tail -n 1)"
+  done
+done | tee "$out/play.txt"
 
 echo "== scale curve"
 scripts/scale_curve.sh "$out/scale_curve.csv" # draws scale_curve.png beside it

@@ -13,6 +13,7 @@
 #include "cli/command_line.hpp"
 #include "cli/fracture_command.hpp"
 #include "cli/merge_command.hpp"
+#include "cli/play_command.hpp"
 #include "cli/render_command.hpp"
 #include "cli/report_table.hpp"
 #include "cli/suite_command.hpp"
@@ -47,6 +48,7 @@ const char* kUsage =
     "  render   frames of one strategy's run as PNG files (what the camera sees)\n"
     "  bench    run time against error: step sizes, solvers, predictors, skips vs a reference\n"
     "  fracture the pieces a scene's object breaks into, as a .glb or .obj file\n"
+    "  play     fly the camera yourself in a window, switch strategies, replay the flight\n"
     "'fragsim <command> --help' lists a command's options and every scene key.\n";
 
 void add_output_options(po::options_description& own) {
@@ -217,6 +219,7 @@ int main(int argc, char** argv) {
     if (command == "render") return cli::cmd_render(args);
     if (command == "bench") return cli::cmd_bench(args);
     if (command == "fracture") return cli::cmd_fracture(args);
+    if (command == "play") return cli::cmd_play(args);
     if (command == "--help" || command == "-h" || command == "help") {
       std::cout << kUsage;
       return 0;

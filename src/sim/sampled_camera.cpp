@@ -23,6 +23,11 @@ SampledCamera::SampledCamera(const CameraDef& def, std::vector<CameraSample> sam
   assert(!samples_.empty());
 }
 
+void SampledCamera::append(const CameraSample& s) {
+  assert(s.t_s > samples_.back().t_s);
+  samples_.push_back(s);
+}
+
 long SampledCamera::interval_at(double t_s) const {
   const auto it = std::upper_bound(samples_.begin(), samples_.end(), t_s,
                                    [](double t, const CameraSample& s) { return t < s.t_s; });

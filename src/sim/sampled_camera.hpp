@@ -21,6 +21,10 @@ class SampledCamera final : public CameraMotion {
   // At a sample's own time, exactly that sample's vectors (right = forward x up).
   CameraPose pose_at(double t_s) const override;
 
+  // A camera driven live grows sample by sample (src/play); `s` must come after the last one.
+  void append(const CameraSample& s);
+  const std::vector<CameraSample>& samples() const { return samples_; }
+
  private:
   // The interval [samples_[i], samples_[i + 1]) holding t_s; -1 before the first sample, or the
   // last index at or after the last.

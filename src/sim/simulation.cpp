@@ -62,10 +62,13 @@ int Scene::step_count() const {
 
 RunTotals simulate(const Scene& scene, Strategy& strategy,
                    std::span<RunObserver* const> observers) {
+  return simulate(scene, strategy, *make_camera_motion(scene), observers);
+}
+
+RunTotals simulate(const Scene& scene, Strategy& strategy, const CameraMotion& path,
+                   std::span<RunObserver* const> observers) {
   const auto run_start = Clock::now();
   const long messages_before = World::ode_messages();
-  const std::unique_ptr<CameraMotion> camera = make_camera_motion(scene);
-  const CameraMotion& path = *camera;
   const CameraLimits limits = declared_limits(scene.camera);
   World world(scene, strategy.needs(), explode(scene, path));
   std::vector<FragmentState> states = world.init_states();

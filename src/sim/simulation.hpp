@@ -10,6 +10,8 @@
 
 namespace fragsim {
 
+class CameraMotion;
+
 struct RunTotals {
   int steps = 0;
   double physics_s = 0.0;
@@ -20,6 +22,11 @@ struct RunTotals {
 };
 
 RunTotals simulate(const Scene& scene, Strategy& strategy,
+                   std::span<RunObserver* const> observers = {});
+// The same with the camera's motion given by the caller instead of made from camera.mode (a
+// camera steered live, src/play). Step k asks for its pose and velocity at k dt, then, as it ends,
+// at (k + 1) dt; nothing later.
+RunTotals simulate(const Scene& scene, Strategy& strategy, const CameraMotion& camera,
                    std::span<RunObserver* const> observers = {});
 
 // Test-only (tests/cli/output_safety_test.cpp), so that a signal lands at a known point of a run

@@ -1,0 +1,90 @@
+#include "play/flight_record.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "io/atomic_file.hpp"
+#include "io/number_format.hpp"
+#include "sim/scene_file.hpp"
+
+namespace fragsim {
+namespace fs = std::filesystem;
+
+namespace {
+
+void append_vec(std::string& out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) {
+    out += ',';
+    append_double(out, v[i]);
+  }
+}
+
+std::string ini_beside(const fs::path& csv) {
+  fs::path p = csv;
+  p.replace_extension(".ini");
+  return p.string();
+}
+
+}  // namespace
+
+std::string track_csv(const CameraDef& camera, const std::string& strategy,
+                      const std::vector<CameraSample>& samples) {
+  std::string out =
+      "strategy,step,t_s,eye_x_m,eye_y_m,eye_z_m,forward_x,forward_y,forward_z,up_x,up_y,up_z,"
+      "near_m,fovy_deg,aspect\n";
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const CameraSample& s = samples[k];
+    out += strategy;
+    out += ',';
+    out += std::to_string(k);
+    out += ',';
+    append_double(out, s.t_s);
+    append_vec(out, s.eye_m);
+    append_vec(out, s.forward);
+    append_vec(out, s.up);
+    // The scene's near plane: a strategy that pulls it in changes what it renders, not the track.
+    for (double v : {camera.near_m, camera.fovy_deg, camera.aspect}) {
+      out += ',';
+      append_double(out, v);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+Scene replay_scene(const Scene& flight, const std::string& track_path, int steps) {
+  Scene s = flight;
+  s.camera.mode = CameraMode::kTrack;
+  s.camera.track_file = fs::absolute(track_path).lexically_normal().string();
+  s.camera.track_strategy.clear();
+  s.camera.track_samples.clear();
+  s.explosion.aim = ExplosionAim::kPresent;
+  s.sim.duration_s = steps * s.sim.dt_s;
+  return s;
+}
+
+RecordPaths record_paths(const std::string& requested, int flight, const std::string& folder) {
+  if (!requested.empty()) {
+    fs::path p(requested);
+    if (flight > 1) {
+      p.replace_filename(p.stem().string() + "-" + std::to_string(flight) + p.extension().string());
+    }
+    return {p.string(), ini_beside(p)};
+  }
+  for (int n = 1;; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "play-%03d.csv", n);
+    const fs::path p = folder.empty() ? fs::path(name) : fs::path(folder) / name;
+    std::error_code ec;
+    if (!fs::exists(p, ec) && !fs::exists(ini_beside(p), ec)) return {p.string(), ini_beside(p)};
+  }
+}
+
+void write_flight(const RecordPaths& paths, const Scene& flight, const std::string& strategy,
+                  const std::vector<CameraSample>& samples, int steps) {
+  write_file_atomically(paths.track_csv, track_csv(flight.camera, strategy, samples));
+  write_file_atomically(paths.scene_ini,
+                        scene_to_ini(replay_scene(flight, paths.track_csv, steps)));
+}
+
+}  // namespace fragsim

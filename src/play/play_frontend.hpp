@@ -1,0 +1,38 @@
+#pragma once
+// What a live session needs from whoever plays it: the window (sdl_window.hpp) or a script (the
+// benchmark's, scripted_route.hpp). The session never sees a device.
+
+#include <vector>
+
+#include "play/flight_controls.hpp"
+#include "render/image.hpp"
+
+namespace fragsim {
+
+enum class PlayCommand {
+  kQuit,            // Esc, the window closed
+  kRestart,         // Space: the explosion again, aimed at where the camera is
+  kNextStrategy,    // Tab
+  kChooseStrategy,  // 1-9: PlayEvent::strategy, from 0
+  kPause,           // P: pause or go on
+  kOverlays,        // O: overlays on or off
+  kScreenshot,      // F12: the frame as a PNG file
+};
+
+struct PlayEvent {
+  PlayCommand command = PlayCommand::kQuit;
+  int strategy = 0;
+};
+
+class PlayFrontend {
+ public:
+  virtual ~PlayFrontend() = default;
+  // Appends what was pressed since the last call, in order, and updates what is held. `step` is
+  // the number of steps simulated in this session so far (a script's clock).
+  virtual void poll(long step, std::vector<PlayEvent>& events, HeldControls& held) = 0;
+  virtual void present(const Image& frame) = 0;
+  // True: simulated time follows the clock (a person watches). False: as fast as it goes.
+  virtual bool paced() const = 0;
+};
+
+}  // namespace fragsim

@@ -1,0 +1,286 @@
+#include "play/play_session.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <thread>
+
+#include "metrics/near_plane_metric.hpp"
+#include "play/hud.hpp"
+#include "play/steered_camera.hpp"
+#include "sim/camera_motion.hpp"
+#include "sim/explosion.hpp"
+#include "sim/scene_strategies.hpp"
+#include "sim/simulation.hpp"
+
+namespace fragsim {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_between(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+// A flight's longest: simulation.duration_s's upper bound, so its replay scene is a valid one.
+constexpr double kMaxFlightS = 3600.0;
+// A window shows at most one frame per 60 Hz refresh; finer steps are simulated, not drawn.
+constexpr double kFrameS = 1.0 / 60.0;
+// The time rate the HUD shows is measured over this much wall time.
+constexpr double kRateWindowS = 1.0;
+
+// How a flight ends, short of its hour: simulate() has no way to stop a run early, so a flight
+// is left by unwinding out of it from the observer (nothing of the run outlives it).
+struct FlightEnd {
+  enum class Why { kQuit, kRestart, kStrategy } why = Why::kRestart;
+  std::size_t strategy = 0;
+};
+
+Scene scene_as_flown(const Scene& scene) {
+  Scene s = scene;
+  // The object stays where the scene put it relative to the scene's camera; each flight's blast
+  // is aimed at where the steered camera is when it goes off.
+  s.object.centre_m = object_centre(scene);
+  s.object.distance_m = 0.0;
+  s.explosion.aim = ExplosionAim::kPresent;
+  s.sim.duration_s = kMaxFlightS;
+  s.camera.mode = CameraMode::kTrack;
+  s.camera.track_file.clear();
+  s.camera.track_strategy.clear();
+  s.camera.track_samples.clear();
+  return s;
+}
+
+std::string numbered_png(const std::string& folder) {
+  for (int n = 1;; ++n) {
+    char name[32];
+    std::snprintf(name, sizeof name, "play-shot-%03d.png", n);
+    const std::filesystem::path p =
+        folder.empty() ? std::filesystem::path(name) : std::filesystem::path(folder) / name;
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) return p.string();
+  }
+}
+
+}  // namespace
+
+class PlaySession::FlightObserver final : public RunObserver {
+ public:
+  FlightObserver(PlaySession& session, const NearPlaneMetric& near, std::string strategy,
+                 FrameRenderer& with_overlays, FrameRenderer& without)
+      : s_(session),
+        near_(near),
+        with_(with_overlays),
+        without_(without),
+        strategy_(std::move(strategy)) {}
+
+  void begin(const RunInfo&, const StepSnapshot& initial) override {
+    hud_.strategy = strategy_;
+    last_end_ = Clock::now();
+    wall_base_ = last_end_;
+    t_base_ = 0.0;
+    rate_.clear();
+    frame(initial, true);
+  }
+
+  void observe(const StepSnapshot& snap) override {
+    ++steps_;
+    ++s_.session_steps_;
+    physics_ms_ += 1e3 * snap.physics_s;
+    strategy_ms_ += 1e3 * snap.strategy_s;
+    frame(snap, false);
+  }
+
+  int steps() const { return steps_; }
+  const HudState& hud() const { return hud_; }
+
+ private:
+  void frame(const StepSnapshot& snap, bool first) {
+    RunSummary counts;
+    near_.fill(counts);
+    hud_.t_s = snap.t_s;
+    hud_.near_fragments = counts.near_fragments;
+    hud_.camera_hits = counts.camera_hit_fragments;
+    hud_.candidates = static_cast<int>(snap.candidates.size());
+    hud_.strategy_ms = 1e3 * snap.strategy_s;
+    hud_.message = s_.message_;
+
+    bool redraw = handle_events();
+    const bool due = first || snap.t_s - last_drawn_t_s_ >= kFrameS - 1e-9;
+    if (due || redraw) draw(snap, due);
+    const bool last = s_.options_.max_steps > 0 && s_.session_steps_ >= s_.options_.max_steps;
+    if (last) throw FlightEnd{FlightEnd::Why::kQuit, 0};
+    if (due) pace(snap.t_s);
+    while (hud_.paused) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      redraw = handle_events();
+      // The camera stands still while paused: a mouse moved meanwhile turns nothing.
+      s_.held_.mouse_yaw_rad = 0.0;
+      s_.held_.mouse_pitch_rad = 0.0;
+      if (redraw || !hud_.paused) draw(snap, false);
+      if (!hud_.paused) {  // the clock starts again from here
+        wall_base_ = Clock::now();
+        t_base_ = snap.t_s;
+        last_end_ = wall_base_;
+        rate_.clear();
+      }
+    }
+  }
+
+  // The front end's events since the last frame; true if the picture must be drawn again.
+  bool handle_events() {
+    events_.clear();
+    s_.frontend_.poll(s_.session_steps_, events_, s_.held_);
+    bool redraw = false;
+    for (const PlayEvent& e : events_) {
+      switch (e.command) {
+        case PlayCommand::kQuit:
+          throw FlightEnd{FlightEnd::Why::kQuit, 0};
+        case PlayCommand::kRestart:
+          throw FlightEnd{FlightEnd::Why::kRestart, 0};
+        case PlayCommand::kNextStrategy:
+          throw FlightEnd{FlightEnd::Why::kStrategy, (s_.current_ + 1) % s_.strategies_.size()};
+        case PlayCommand::kChooseStrategy:
+          if (e.strategy >= 0 && static_cast<std::size_t>(e.strategy) < s_.strategies_.size()) {
+            throw FlightEnd{FlightEnd::Why::kStrategy, static_cast<std::size_t>(e.strategy)};
+          }
+          break;
+        case PlayCommand::kPause:
+          hud_.paused = !hud_.paused;
+          redraw = true;
+          break;
+        case PlayCommand::kOverlays:
+          s_.overlays_ = !s_.overlays_;
+          redraw = true;
+          break;
+        case PlayCommand::kScreenshot:
+          screenshot_ = true;
+          redraw = true;
+          break;
+      }
+    }
+    return redraw;
+  }
+
+  void draw(const StepSnapshot& snap, bool timed) {
+    const auto t0 = Clock::now();
+    Image image = (s_.overlays_ ? with_ : without_).render(snap);
+    draw_hud(image, hud_);
+    const auto t1 = Clock::now();
+    s_.frontend_.present(image);
+    const auto t2 = Clock::now();
+    if (screenshot_) {
+      screenshot_ = false;
+      const std::string path = numbered_png(s_.options_.screenshot_folder);
+      write_png(path, image);
+      if (s_.on_message) s_.on_message("wrote " + path);
+    }
+    if (!timed) return;
+    FrameTimes& t = s_.times_;
+    t.physics_ms.push_back(physics_ms_);
+    t.strategy_ms.push_back(strategy_ms_);
+    t.draw_ms.push_back(ms_between(t0, t1));
+    t.present_ms.push_back(ms_between(t1, t2));
+    t.frame_ms.push_back(ms_between(last_end_, t2));
+    physics_ms_ = 0.0;
+    strategy_ms_ = 0.0;
+    last_drawn_t_s_ = snap.t_s;
+  }
+
+  // Waits until the clock reaches simulated time; when it is already past, simulated time gives
+  // way (it is never caught up by running faster), and the rate over the last second says so.
+  void pace(double t_s) {
+    if (s_.frontend_.paced()) {
+      const auto target = wall_base_ + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double>(t_s - t_base_));
+      const auto now = Clock::now();
+      if (now < target) {
+        std::this_thread::sleep_until(target);
+      } else {
+        wall_base_ = now;
+        t_base_ = t_s;
+      }
+    }
+    last_end_ = Clock::now();
+    rate_.push_back({last_end_, t_s});
+    while (rate_.size() > 2 &&
+           std::chrono::duration<double>(last_end_ - rate_.front().first).count() > kRateWindowS) {
+      rate_.pop_front();
+    }
+    const double wall_s = std::chrono::duration<double>(last_end_ - rate_.front().first).count();
+    hud_.time_rate = wall_s > 0.25 * kRateWindowS ? (t_s - rate_.front().second) / wall_s : 1.0;
+  }
+
+  PlaySession& s_;
+  const NearPlaneMetric& near_;
+  FrameRenderer& with_;
+  FrameRenderer& without_;
+  std::string strategy_;
+  HudState hud_;
+  std::vector<PlayEvent> events_;
+  int steps_ = 0;
+  bool screenshot_ = false;
+  double physics_ms_ = 0.0;
+  double strategy_ms_ = 0.0;
+  double last_drawn_t_s_ = 0.0;
+  Clock::time_point last_end_;
+  Clock::time_point wall_base_;
+  double t_base_ = 0.0;
+  std::deque<std::pair<Clock::time_point, double>> rate_;
+};
+
+PlaySession::PlaySession(const Scene& scene, PlayOptions options, PlayFrontend& frontend)
+    : flight_scene_(scene_as_flown(scene)),
+      options_(std::move(options)),
+      frontend_(frontend),
+      strategies_(strategy_names()),
+      controls_(scene.camera, make_camera_motion(scene)->pose_at(0.0)) {
+  for (const std::string& name : strategies_) make_strategy(name, flight_scene_);
+  current_ = strategies_.size();
+  for (std::size_t i = 0; i < strategies_.size(); ++i) {
+    if (strategies_[i] == options_.strategy) current_ = i;
+  }
+  if (current_ == strategies_.size()) make_strategy(options_.strategy, flight_scene_);  // throws
+}
+
+void PlaySession::run() {
+  FrameStyle plain = options_.style;
+  plain.overlays = {};
+  FrameRenderer with_overlays(flight_scene_, options_.style);
+  FrameRenderer without(flight_scene_, plain);
+  const double dt = flight_scene_.sim.dt_s;
+  for (;;) {
+    const std::string name = strategies_[current_];
+    const std::unique_ptr<Strategy> strategy = make_strategy(name, flight_scene_);
+    SteeredCamera camera(flight_scene_.camera, dt, controls_.sample(0.0),
+                         [&](int, double t_s) { return controls_.step(held_, t_s, dt); });
+    NearPlaneMetric near;
+    FlightObserver flight(*this, near, name, with_overlays, without);
+    RunObserver* const observers[] = {&near, &flight};
+    FlightEnd end;
+    try {
+      simulate(flight_scene_, *strategy, camera, observers);
+    } catch (const FlightEnd& e) {
+      end = e;
+    }
+
+    FlightReport report;
+    report.flight = ++flights_;
+    report.strategy = name;
+    report.steps = flight.steps();
+    report.t_s = flight.hud().t_s;
+    report.near_fragments = flight.hud().near_fragments;
+    report.camera_hits = flight.hud().camera_hits;
+    if (options_.record_flights && report.steps > 0) {
+      report.recorded = record_paths(options_.record, ++recorded_, options_.record_folder);
+      write_flight(*report.recorded, flight_scene_, name, camera.samples(), report.steps);
+      message_ = "recorded " + report.recorded->track_csv + "  replay: fragsim compare --scene " +
+                 report.recorded->scene_ini;
+    }
+    if (on_flight) on_flight(report);
+    if (end.why == FlightEnd::Why::kQuit) return;
+    if (end.why == FlightEnd::Why::kStrategy) current_ = end.strategy;
+  }
+}
+
+}  // namespace fragsim
