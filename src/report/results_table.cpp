@@ -67,6 +67,13 @@ std::string exits_text(const RunSummary& s) {
          std::to_string(s.exits_near) + "/" + std::to_string(s.exits_stayed);
 }
 
+std::string pushed_exits_text(const RunSummary& s) {
+  if (s.forced_fragments == 0) return "-";
+  return std::to_string(s.pushed_exits_top) + "/" + std::to_string(s.pushed_exits_bottom) + "/" +
+         std::to_string(s.pushed_exits_left) + "/" + std::to_string(s.pushed_exits_right) + "/" +
+         std::to_string(s.pushed_exits_near) + "/" + std::to_string(s.pushed_exits_stayed);
+}
+
 // The failures of the thesis's goals: cut, hit or vanished (best_for_thesis_goals).
 int hits(const RunSummary& s) {
   return s.near_fragments + s.camera_hit_fragments + s.vanished_fragments;
@@ -230,6 +237,13 @@ std::vector<ResultsColumn> results_columns(double near_miss_m) {
        .legend = "Top/Bottom/Left/Right/Near/Stayed",
        .legend_break = B::line,
        .cell = [](const Evaluation& e) { return exits_text(e.summary); }},
+      {.header = "pushed_exits",
+       .parts = "T/B/L/R/N/S",
+       .explanation =
+           "how the fragments the strategy pushed left the screen (top/bottom/left/right/"
+           "near/stayed): the edges edge-min.edge_weights asks for",
+       .terminal = false,
+       .cell = [](const Evaluation& e) { return pushed_exits_text(e.summary); }},
       {.header = "miss",
        .explanation = "near misses: passed close to the eye without touching",
        .legend_key = "miss",
@@ -311,10 +325,19 @@ std::string legend_text(const ResultsTable& table, bool timings, bool line_break
 
 std::string results_text(const ResultsTable& table) {
   std::vector<std::string> headers;
-  for (const ResultsColumn& c : table.columns) headers.push_back(column_title(c));
+  for (const ResultsColumn& c : table.columns) {
+    if (c.terminal) headers.push_back(column_title(c));
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& row : table.rows) {
+    rows.emplace_back();
+    for (std::size_t k = 0; k < table.columns.size(); ++k) {
+      if (table.columns[k].terminal) rows.back().push_back(row[k]);
+    }
+  }
   std::string out = "scene " + table.scene_name + ": " + table.caption + "\n\n" +
-                    aligned_text_table(headers, table.rows) + "\n" +
-                    legend_text(table, true, true) + "\n";
+                    aligned_text_table(headers, rows) + "\n" + legend_text(table, true, true) +
+                    "\n";
   for (const ResultsNote& n : table.notes) out += n.text + "\n";
   if (!table.verdict.empty()) out += table.verdict + "\n";
   return out;

@@ -32,6 +32,9 @@ struct ResultsColumn {
   std::string legend{};       // empty: the column has no legend entry of its own
   LegendBreak legend_break = LegendBreak::semicolon;
   bool timing = false;  // wall-clock: differs between runs, so never on the page or in table.csv
+  // false: on the page and in table.csv only, a detail the terminal's width has no room for (its
+  // tooltip explains it; it has no legend entry).
+  bool terminal = true;
   std::function<std::string(const Evaluation&)> cell{};
 };
 
