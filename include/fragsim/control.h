@@ -30,9 +30,9 @@
 #include <stdint.h>
 
 /* Before 1.0 a minor version may change the structs, so the shared library is named for it
- * (libfragsim_control.so.0.3): a program built against another minor is not loaded with it. */
+ * (libfragsim_control.so.0.4): a program built against another minor is not loaded with it. */
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 3
+#define FRAGSIM_CONTROL_VERSION_MINOR 4
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -139,6 +139,20 @@ typedef struct fragsim_edge_min_def {
    * for a fragment never solved), and stats.deferred counts them. Smaller: a bounded cost per
    * call, and late or stale pushes when many fragments threaten at once. 0 (default): no cap. */
   int32_t max_solves;
+  /* Since 0.4. The ways out, weighed: each push goes toward the screen edge of least push divided
+   * by its weight, in the order top, bottom, left, right; 0 forbids an edge (not all four), each
+   * in [0, 1e6]. Default 1 1 1 1. Only pushed fragments change their way out, and a push is the
+   * least that clears the camera, so a fragment may still leave by a forbidden edge (fragsim's
+   * README "Keeping the action visible"). */
+  double edge_weights[4];
+  /* Since 0.4. An occlusion bound: the share of the central region (cover_region of the screen's
+   * width and height) that fragments are predicted to cover over the coming second may not
+   * exceed cover_max; the fragments that cover most per unit of push are pushed out of it. Each
+   * fragment is seen as a disc of its radius_m (its bounding sphere's shadow, so the cover is
+   * overestimated). 1 (default): off. Smaller: a clearer view, at much more deviation (fragsim's
+   * docs/visibility.md). In [0, 1]. */
+  double cover_max;
+  double cover_region; /* in (0, 1]; default 0.5 */
 } fragsim_edge_min_def;
 
 typedef struct fragsim_edge_def {

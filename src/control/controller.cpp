@@ -96,6 +96,9 @@ fragsim::EdgeMinParams edge_min_params(const fragsim_controller_def& d) {
   p.camera_turn_degps = d.edge_min.camera_turn_degps;
   p.horizon_cap_s = d.horizon_cap_s;
   p.max_solves = d.edge_min.max_solves;
+  for (std::size_t k = 0; k < 4; ++k) p.edge_weights[k] = d.edge_min.edge_weights[k];
+  p.cover_max = d.edge_min.cover_max;
+  p.cover_region = d.edge_min.cover_region;
   return p;
 }
 
@@ -159,7 +162,10 @@ Failure validate(const fragsim_controller_def& def) {
                      "edge_min.camera_model", raw(p.camera_model),
                      "must be a fragsim_camera_model")) ||
           (f = check_key(em_keys, "camera_accel_mps2", em, "edge_min.camera_accel_mps2")) ||
-          (f = check_key(em_keys, "camera_turn_degps", em, "edge_min.camera_turn_degps"))) {
+          (f = check_key(em_keys, "camera_turn_degps", em, "edge_min.camera_turn_degps")) ||
+          (f = check_key(em_keys, "edge_weights", em, "edge_min.edge_weights")) ||
+          (f = check_key(em_keys, "cover_max", em, "edge_min.cover_max")) ||
+          (f = check_key(em_keys, "cover_region", em, "edge_min.cover_region"))) {
         return f;
       }
       return {};
@@ -602,6 +608,9 @@ FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void) {
   d.deflect_all.accel_mps2 = da.accel_mps2;
   d.deflect_all.range_m = da.range_m;
   d.edge_min.max_solves = em.max_solves;
+  for (std::size_t k = 0; k < 4; ++k) d.edge_min.edge_weights[k] = em.edge_weights[k];
+  d.edge_min.cover_max = em.cover_max;
+  d.edge_min.cover_region = em.cover_region;
   d.horizon_cap_s = em.horizon_cap_s;  // edge's default is the same
   d.internal_value = kDefCookie;
   return d;

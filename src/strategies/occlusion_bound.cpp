@@ -185,7 +185,9 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
     p.d = cam.to_camera(f.position_m);
     p.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
     p.a = cam.dir_to_camera(accel);
-    p.rho = disc_radius_m(f.half_extents_m);
+    // A fragment known only by its bounding sphere (the controller library's) is that sphere's
+    // shadow: larger than its true mean shadow, so the bound errs toward clearing more.
+    p.rho = f.half_extents_m.isZero() ? f.radius_m : disc_radius_m(f.half_extents_m);
     p.valid = p.rho > 0.0 && p.d.allFinite() && p.a.allFinite();
     if (!p.valid) continue;
     for (int j = 0; j < k_samples; ++j) {

@@ -128,6 +128,9 @@ TEST(ControlApi, DefaultsAreTheToolsDefaults) {
   EXPECT_EQ(d.edge_min.camera_model, FRAGSIM_CAMERA_BOUNDED_ACCEL);  // the tool's default
   EXPECT_EQ(d.edge_min.camera_accel_mps2, em.camera_accel_mps2);
   EXPECT_EQ(d.edge_min.camera_turn_degps, em.camera_turn_degps);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_EQ(d.edge_min.edge_weights[k], em.edge_weights[k]);
+  EXPECT_EQ(d.edge_min.cover_max, 1.0);  // off
+  EXPECT_EQ(d.edge_min.cover_region, em.cover_region);
   EXPECT_EQ(d.edge.k_Nms2, e.k);
   EXPECT_EQ(d.edge.replan, FRAGSIM_EDGE_REPLAN_NEVER);
   EXPECT_EQ(d.deflect_all.accel_mps2, 60.0);
@@ -158,6 +161,14 @@ TEST(ControlApi, BadDefValuesAreRefusedNamingTheField) {
       // The scene file's range for the same parameter (edge-min.a_max_mps2 is at most 1e9).
       {[](fragsim_controller_def& d) { d.edge_min.a_max_mps2 = 2e9; }, "edge_min.a_max_mps2"},
       {[](fragsim_controller_def& d) { d.edge_min.max_solves = -1; }, "edge_min.max_solves"},
+      {[](fragsim_controller_def& d) {
+         for (double& w : d.edge_min.edge_weights) w = 0.0;
+       },
+       "edge_min.edge_weights"},
+      {[](fragsim_controller_def& d) { d.edge_min.edge_weights[2] = -1.0; },
+       "edge_min.edge_weights"},
+      {[](fragsim_controller_def& d) { d.edge_min.cover_max = -0.1; }, "edge_min.cover_max"},
+      {[](fragsim_controller_def& d) { d.edge_min.cover_region = kNaN; }, "edge_min.cover_region"},
       {[](fragsim_controller_def& d) { set_raw(d.edge_min.camera_model, 9); },
        "edge_min.camera_model"},
       {[](fragsim_controller_def& d) { d.horizon_cap_s = 0.0; }, "horizon_cap_s"},
@@ -253,6 +264,73 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   strategy.step(context_for(in, states), out);
   const std::vector<fragsim_vec3> tool = dense(out, 1);
   EXPECT_EQ(std::memcmp(&tool[0], &forces[0], sizeof(fragsim_vec3)), 0);
+}
+
+// The same fragment with the top forbidden (edge_weights 0 1 1 1): the next cheapest way out is
+// down, by 0.15 + 0.05 + 0.02 = 0.22 m (sideways would be 0.2 + 0.05 = 0.25 m), so
+// a = 0.22 / (0.5 (0.475^2 + 0.475 / 60)), pointing down; the tool's strategy with the same
+// weights gives the same bits.
+TEST(ControlApi, ForbiddenTopEdgeSendsTheFragmentDown) {
+  fragsim_controller_def def = fragsim_default_controller_def();
+  def.edge_min.edge_weights[0] = 0.0;
+  Controller c(def);
+  const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42)};
+  const fragsim_step_input in = still_input(frags);
+  std::vector<fragsim_vec3> forces(1);
+  ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
+  const double t = 0.475;
+  const double a = 0.22 / (0.5 * (t * t + t * kDt));
+  EXPECT_NEAR(forces[0].y, -2.0 * a, 1e-9 * 2.0 * a);
+  EXPECT_EQ(forces[0].x, 0.0);
+  EXPECT_EQ(forces[0].z, 0.0);
+
+  std::vector<fragsim::FragmentState> states;
+  fragsim::EdgeMinParams params;
+  params.edge_weights = {0.0, 1.0, 1.0, 1.0};
+  fragsim::EdgeMinStrategy strategy{params};
+  fragsim::StepOutput out;
+  strategy.step(context_for(in, states), out);
+  const std::vector<fragsim_vec3> tool = dense(out, 1);
+  EXPECT_EQ(std::memcmp(&tool[0], &forces[0], sizeof(fragsim_vec3)), 0);
+}
+
+// A wall of 64 fragments 6 m ahead (an 8 x 8 grid 0.5 m apart, radius 0.3 m: discs that overlap
+// into a 4.1 m square) coming at 9 m/s. The central region at 6 m is half the screen's height and
+// width: 2 * 6 tan 30 deg / 2 = 3.46 m by 3.46 * 16/9 = 6.16 m, of which the wall covers
+// 4.1 x 3.46 m, 67%, and more as it nears. With cover_max = 0.3 fragments beyond the ones
+// threatening the camera are pushed out of the region; the tool's strategy gives the same bits.
+TEST(ControlApi, CoverMaxPushesTheWallOutOfTheCentre) {
+  std::vector<fragsim_fragment> frags;
+  for (int i = 0; i < 64; ++i) {
+    fragsim_fragment f = fragment(0.5 * (i % 8) - 1.75, 0.5 * (i / 8) - 1.75, -6.0, 0.0, 0.0, 9.0,
+                                  500 + static_cast<std::uint64_t>(i));
+    f.radius_m = 0.3;
+    frags.push_back(f);
+  }
+  const fragsim_step_input in = still_input(frags);
+  int pushed[2] = {0, 0};
+  for (int bounded = 0; bounded < 2; ++bounded) {
+    fragsim_controller_def def = fragsim_default_controller_def();
+    if (bounded) def.edge_min.cover_max = 0.3;
+    Controller c(def);
+    std::vector<fragsim_vec3> forces(frags.size());
+    fragsim_step_stats stats{};
+    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    pushed[bounded] = stats.pushed;
+
+    std::vector<fragsim::FragmentState> states;
+    fragsim::EdgeMinParams params;
+    params.cover_max = def.edge_min.cover_max;
+    fragsim::EdgeMinStrategy strategy{params};
+    strategy.reset(static_cast<int>(frags.size()));
+    fragsim::StepOutput out;
+    strategy.step(context_for(in, states), out);
+    const std::vector<fragsim_vec3> tool = dense(out, frags.size());
+    EXPECT_EQ(std::memcmp(tool.data(), forces.data(), forces.size() * sizeof forces[0]), 0)
+        << "cover_max " << def.edge_min.cover_max;
+  }
+  EXPECT_GT(pushed[0], 0);  // the fragments on course for the camera
+  EXPECT_GT(pushed[1], pushed[0]) << "the bound must push more than the camera alone";
 }
 
 // Fragments 20 m behind a still camera (+z; it looks down -z), flying away at 1 m/s with no
