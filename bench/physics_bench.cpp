@@ -165,7 +165,8 @@ std::vector<fragsim::FragmentSpawn> shapes_spawns(Piece piece) {
   return spawns;
 }
 
-// `contacts`: simulation.convex_ground_contacts (8, the default, keeps every corner ODE returns).
+// `contacts`: simulation.convex_ground_contacts (8 keeps every corner ODE returns, as the rows
+// published before the scene default became 4 did; the `_4_contacts` rows are the default).
 void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase, int contacts = 8) {
   Overrides overrides;
   overrides.push_back({"simulation.convex_ground_contacts", std::to_string(contacts)});

@@ -48,7 +48,7 @@ struct SimulationDef {
   // Contacts kept for a convex piece on the ground plane (ODE returns every vertex below it, up to
   // 8 here): with fewer, the ones kept are spread over the piece's footprint (the deepest, then
   // each time the one farthest from those kept). A box on the ground has at most 4 either way.
-  int convex_ground_contacts = 8;
+  int convex_ground_contacts = 4;
 
   // Without fragment-fragment contacts every island is one fragment and its few contacts, where
   // the exact solver is cheap. It also keeps islands independent: QuickStep draws its constraint

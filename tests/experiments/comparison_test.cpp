@@ -204,7 +204,8 @@ TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
 // The shipped Voronoi scene (front.ini's set-up, 1,000 cells): its summary pinned the same way,
 // and the verdict it supports checked in numbers: edge-min keeps every piece off the lens and
 // the camera body while `none` lets them through (README, "Debris as a fracture tool makes it").
-// 0xd3e597a857a49a5c before the `vanished_fragments` column, the same bytes otherwise.
+// Moved on purpose on 2026-12-01 when simulation.convex_ground_contacts became 4 (the pieces
+// settle differently on the ground; every count holds, README "Convex pieces against boxes").
 TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/voronoi.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
@@ -216,8 +217,7 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   EXPECT_EQ(runs.back().summary.near_fragments, 0);
   EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
-  EXPECT_EQ(fnv1a(without_new_columns(csv)), 0xd3e597a857a49a5cull) << csv;
-  EXPECT_EQ(fnv1a(csv), 0x5b329f238d01f235ull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0xde0acb81a4b30967ull) << csv;
 }
 
 // `fade` on the default scene, pinned, with the numbers the README reads: physics untouched (no
