@@ -4,20 +4,13 @@
 #include <filesystem>
 
 #include "io/atomic_file.hpp"
-#include "io/number_format.hpp"
+#include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
 
 namespace fragsim {
 namespace fs = std::filesystem;
 
 namespace {
-
-void append_vec(std::string& out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) {
-    out += ',';
-    append_double(out, v[i]);
-  }
-}
 
 std::string ini_beside(const fs::path& csv) {
   fs::path p = csv;
@@ -29,25 +22,18 @@ std::string ini_beside(const fs::path& csv) {
 
 std::string track_csv(const CameraDef& camera, const std::string& strategy,
                       const std::vector<CameraSample>& samples) {
-  std::string out =
-      "strategy,step,t_s,eye_x_m,eye_y_m,eye_z_m,forward_x,forward_y,forward_z,up_x,up_y,up_z,"
-      "near_m,fovy_deg,aspect\n";
+  std::string out = camera_csv_header();
   for (std::size_t k = 0; k < samples.size(); ++k) {
     const CameraSample& s = samples[k];
-    out += strategy;
-    out += ',';
-    out += std::to_string(k);
-    out += ',';
-    append_double(out, s.t_s);
-    append_vec(out, s.eye_m);
-    append_vec(out, s.forward);
-    append_vec(out, s.up);
+    CameraPose pose;
+    pose.eye_m = s.eye_m;
+    pose.forward = s.forward;
+    pose.up = s.up;
     // The scene's near plane: a strategy that pulls it in changes what it renders, not the track.
-    for (double v : {camera.near_m, camera.fovy_deg, camera.aspect}) {
-      out += ',';
-      append_double(out, v);
-    }
-    out += '\n';
+    pose.near_m = camera.near_m;
+    pose.fovy_deg = camera.fovy_deg;
+    pose.aspect = camera.aspect;
+    append_camera_row(out, strategy, k, s.t_s, pose);
   }
   return out;
 }

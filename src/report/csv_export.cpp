@@ -102,23 +102,33 @@ std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs) {
   return out;
 }
 
-std::string camera_csv(const Scene& scene, const std::vector<Evaluation>& runs) {
-  std::string out =
+const std::string& camera_csv_header() {
+  static const std::string header =
       "strategy,step,t_s,eye_x_m,eye_y_m,eye_z_m,forward_x,forward_y,forward_z,up_x,up_y,up_z,"
       "near_m,fovy_deg,aspect\n";
+  return header;
+}
+
+void append_camera_row(std::string& out, const std::string& strategy, std::size_t step, double t_s,
+                       const CameraPose& pose) {
+  append(out, strategy, ",", std::to_string(step), ",");
+  append_double(out, t_s);
+  append_vec(out, pose.eye_m);
+  append_vec(out, pose.forward);
+  append_vec(out, pose.up);
+  for (double v : {pose.near_m, pose.fovy_deg, pose.aspect}) {
+    out += ',';
+    append_double(out, v);
+  }
+  out += "\n";
+}
+
+std::string camera_csv(const Scene& scene, const std::vector<Evaluation>& runs) {
+  std::string out = camera_csv_header();
   for (const Evaluation& e : runs) {
     for (std::size_t k = 0; k < e.camera.size(); ++k) {
-      const CameraPose& c = e.camera[k];
-      append(out, e.summary.strategy, ",", std::to_string(k), ",");
-      append_double(out, static_cast<double>(k) * scene.sim.dt_s);
-      append_vec(out, c.eye_m);
-      append_vec(out, c.forward);
-      append_vec(out, c.up);
-      for (double v : {c.near_m, c.fovy_deg, c.aspect}) {
-        out += ',';
-        append_double(out, v);
-      }
-      out += "\n";
+      append_camera_row(out, e.summary.strategy, k, static_cast<double>(k) * scene.sim.dt_s,
+                        e.camera[k]);
     }
   }
   return out;

@@ -3,10 +3,12 @@
 // summary.csv, steps.csv, camera.csv, timing.csv and config.ini (trajectories.csv is streamed by
 // TrajectoryWriter). Every file but timing.csv is byte-identical for the same scene and seed.
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include "experiments/evaluation.hpp"
+#include "geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {
@@ -22,6 +24,11 @@ void write_comparison_csv(const std::string& dir, const Scene& scene,
 std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string camera_csv(const Scene& scene, const std::vector<Evaluation>& runs);
+// camera.csv's header line, and one of its rows (`pose` at step `step`, time t_s) appended: the
+// one format a recorded flight (fragsim play) and a run's camera.csv share, so either replays.
+const std::string& camera_csv_header();
+void append_camera_row(std::string& out, const std::string& strategy, std::size_t step, double t_s,
+                       const CameraPose& pose);
 std::string timing_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 
 // summary.csv's column names and one run's cells (the same text summary_csv writes), for files

@@ -10,17 +10,13 @@
 #include <random>
 
 #include "support/convex_shapes.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
 FragmentState box_at(const Eigen::Vector3d& p, double half_m = 0.01) {
-  FragmentState f;
-  f.position_m = p;
-  f.half_extents_m = Eigen::Vector3d::Constant(half_m);
-  f.mass_kg = 1.0;
-  f.radius_m = half_m * std::sqrt(3.0);
-  return f;
+  return test::box_at(p, half_m);
 }
 
 // Runs the metric over a path of positions (one snapshot each) and returns its summary.

@@ -11,17 +11,13 @@
 #include <vector>
 
 #include "metrics/near_plane_metric.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
 FragmentState box_at(const Eigen::Vector3d& p, double half_m = 0.01) {
-  FragmentState f;
-  f.position_m = p;
-  f.half_extents_m = Eigen::Vector3d::Constant(half_m);
-  f.mass_kg = 1.0;
-  f.radius_m = half_m * std::sqrt(3.0);
-  return f;
+  return test::box_at(p, half_m);
 }
 
 struct Frame {

@@ -21,12 +21,7 @@ namespace fragsim {
 namespace {
 
 FragmentState box_at(const Eigen::Vector3d& p, double half_m = 0.05) {
-  FragmentState f;
-  f.position_m = p;
-  f.half_extents_m = Eigen::Vector3d::Constant(half_m);
-  f.radius_m = half_m * std::sqrt(3.0);
-  f.mass_kg = 1.0;
-  return f;
+  return test::box_at(p, half_m);
 }
 
 // The defaults: opaque from 1 m out, invisible from 0.25 m in.

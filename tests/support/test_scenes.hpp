@@ -1,10 +1,10 @@
 #pragma once
 // Small hand-made scenes and cameras for the tests: one fragment fired along a known line at a
-// still camera, a square 90-degree camera, and a recorder of every step.
+// still camera, a square 90-degree camera, a cube fragment's state, and a recorder of every step.
 
-#include <vector>
-
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "experiments/evaluation.hpp"
 #include "geometry/camera_pose.hpp"
@@ -12,6 +12,17 @@
 #include "sim/scene.hpp"
 
 namespace fragsim::test {
+
+// A cube of half size `half_m` and 1 kg at `p`, axis-aligned, at rest: what a metric or a
+// strategy sees of one fragment.
+inline FragmentState box_at(const Eigen::Vector3d& p, double half_m) {
+  FragmentState f;
+  f.position_m = p;
+  f.half_extents_m = Eigen::Vector3d::Constant(half_m);
+  f.mass_kg = 1.0;
+  f.radius_m = half_m * std::sqrt(3.0);
+  return f;
+}
 
 // A still camera at (0, 1.6, 0) looking down -z (right = +x, up = +y), and one 0.1 m box at
 // `start_m` moving at `speed_mps` along +z (toward the camera) with no gravity, no spin, no ground.
