@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -142,8 +144,35 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
   }
 }
 
+// A glTF buffer's external file (its uri), read in place of tinygltf's own reader, which takes
+// the size a stream reports for whatever the uri names: a directory's (a fuzzed uri of "data",
+// run from the repository's root) came back as 2^63 bytes to allocate. Here, as for every input
+// file, only a regular file is read, and at most kMaxBufferBytes of it.
+constexpr std::uintmax_t kMaxBufferBytes = std::uintmax_t{1} << 30;
+
+bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                      void*) {
+  const auto refuse = [&](const std::string& why) {
+    if (err != nullptr) *err += "buffer '" + path + "': " + why;
+    return false;
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return refuse("not a regular file");
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) return refuse("cannot read its size");
+  if (size > kMaxBufferBytes) return refuse("larger than 1 GiB");
+  std::ifstream in(path, std::ios::binary);
+  out->resize(static_cast<std::size_t>(size));
+  if (!in || !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    return refuse("cannot read it");
+  }
+  return true;
+}
+
 std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path, bool binary) {
   tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_buffer_file,
+                         &tinygltf::WriteWholeFile, nullptr});
   tinygltf::Model model;
   std::string err;
   std::string warn;

@@ -207,6 +207,33 @@ std::string base64(const std::string& bytes) {
   return out;
 }
 
+// A buffer's uri is read only when it names a regular file: one naming a folder (here "sub",
+// beside the .gltf) is refused in one line, where tinygltf's own reader took a folder's
+// stream size, 2^63, as the bytes to allocate (found by gltf_mesh_fuzz). A real buffer file
+// beside the .gltf is still read.
+TEST_F(MeshFile, GltfBufferUriMustNameARegularFile) {
+  fs::create_directories(dir_ / "sub");
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":36,"uri":"URI"}],)"
+      R"("bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":36}],)"
+      R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+      R"("meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],"nodes":[{"mesh":0}]})";
+  const auto with_uri = [&](const std::string& uri) {
+    std::string j = json;
+    j.replace(j.find("URI"), 3, uri);
+    return j;
+  };
+  const std::string path = write("folder.gltf", with_uri("sub"));
+  const std::string folder = error_of(path);
+  EXPECT_EQ(folder.rfind(path + ": not a readable glTF file: ", 0), 0u) << folder;
+  EXPECT_NE(folder.find("not a regular file"), std::string::npos) << folder;
+  // Three points of a triangle in a 36-byte file: read (and refused only as a flat piece).
+  const float xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  write("tri.bin", std::string(reinterpret_cast<const char*>(xyz), sizeof xyz));
+  const std::string m = error_of(write("tri.gltf", with_uri("tri.bin")));
+  EXPECT_EQ(m.find("not a readable glTF file"), std::string::npos) << m;
+}
+
 TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
   // A 1 x 2 x 3 box about its origin, in a child node turned 90 degrees about z and moved 0.5 m
   // along x, under a parent moved to (1, 2, 3) and scaled by 2. The piece: a 4 x 2 x 6 box (the
