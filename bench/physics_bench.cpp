@@ -34,18 +34,19 @@ fragsim::Scene landed_scene(Overrides overrides) {
   return fragsim::load_scene(FRAGSIM_DATA_DIR "/scenes/front.ini", overrides);
 }
 
+// Step k of a run: the camera moved to its pose at k dt, then one physics step.
+void step_with_camera(fragsim::World& world, const fragsim::CameraPath& path, double dt_s, int k) {
+  const double t_s = k * dt_s;
+  world.set_camera(path.pose_at(t_s), path.velocity_at(t_s));
+  world.step(dt_s);
+}
+
 void BM_PhysicsStep(benchmark::State& state, Overrides overrides) {
   const fragsim::Scene scene = landed_scene(std::move(overrides));
   const fragsim::CameraPath path(scene.camera);
   fragsim::World world(scene, {}, fragsim::explode(scene));
-  const double dt = scene.sim.dt_s;
   int k = 0;
-  auto advance = [&] {
-    const double t = k * dt;
-    world.set_camera(path.pose_at(t), path.velocity_at(t));
-    world.step(dt);
-    ++k;
-  };
+  auto advance = [&] { step_with_camera(world, path, scene.sim.dt_s, k++); };
   for (int i = 0; i < kSettleSteps; ++i) advance();
   for (auto _ : state) advance();
   state.counters["awake_at_end"] = world.awake_count();
@@ -177,14 +178,8 @@ void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase, int con
   const fragsim::Scene scene = fragsim::load_scene(FRAGSIM_DATA_DIR "/scenes/front.ini", overrides);
   const fragsim::CameraPath path(scene.camera);
   fragsim::World world(scene, {}, shapes_spawns(piece));
-  const double dt = scene.sim.dt_s;
   int k = 0;
-  auto advance = [&] {
-    const double t = k * dt;
-    world.set_camera(path.pose_at(t), path.velocity_at(t));
-    world.step(dt);
-    ++k;
-  };
+  auto advance = [&] { step_with_camera(world, path, scene.sim.dt_s, k++); };
   if (phase != Phase::kFlight) {
     for (int i = 0; i < 3 * kSettleSteps; ++i) advance();
   }
