@@ -11,6 +11,7 @@
 #include <fstream>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 
 #include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
@@ -52,9 +53,14 @@ std::vector<RawPiece> raw_obj(const std::string& text, const std::string& path) 
   std::string warn;
   std::string err;
   // Materials do not matter to a piece's shape: no material reader, so mtllib lines are ignored.
-  if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, false)) {
-    throw InputError(path + ": not a readable OBJ file: " + one_line(err));
+  bool ok = false;
+  try {  // as for glTF below: a library's exception is a refusal, not a crash
+    ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, false);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not a readable OBJ file: the OBJ reader failed (" +
+                     one_line(e.what()) + ")");
   }
+  if (!ok) throw InputError(path + ": not a readable OBJ file: " + one_line(err));
   std::vector<RawPiece> out;
   for (const tinyobj::shape_t& s : shapes) {
     if (s.mesh.indices.empty()) continue;
@@ -177,12 +183,20 @@ std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path
   std::string err;
   std::string warn;
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  const bool ok =
-      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                           reinterpret_cast<const unsigned char*>(bytes.data()),
-                                           static_cast<unsigned int>(bytes.size()), dir)
-             : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                          static_cast<unsigned int>(bytes.size()), dir);
+  bool ok = false;
+  // tinygltf reports most bad input in err, but not all: a .glb buffer of byteLength 0 beside a
+  // BIN chunk made it index an empty vector with at() (found by gltf_mesh_fuzz in CI), and a
+  // library's exception must reach the user as the same one line as its other refusals.
+  try {
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                              reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<unsigned int>(bytes.size()), dir)
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
+                                             static_cast<unsigned int>(bytes.size()), dir);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not a readable glTF file: the glTF reader failed (" +
+                     one_line(e.what()) + ")");
+  }
   if (!ok) throw InputError(path + ": not a readable glTF file: " + one_line(err));
 
   std::vector<int> roots;

@@ -234,6 +234,28 @@ TEST_F(MeshFile, GltfBufferUriMustNameARegularFile) {
   EXPECT_EQ(m.find("not a readable glTF file"), std::string::npos) << m;
 }
 
+// gltf_mesh_fuzz's seed empty_buffer_beside_bin_chunk.glb: a .glb whose one buffer has
+// byteLength 0 beside an 8-byte BIN chunk. tinygltf throws std::out_of_range on it; the reader
+// refuses it in the one line of any unreadable glTF file.
+TEST_F(MeshFile, GltfReaderExceptionIsOneLineRefusal) {
+  const std::string json = R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0}]})";
+  const auto le32 = [](std::uint32_t v) {
+    std::string b(4, '\0');
+    for (int i = 0; i < 4; ++i) b[static_cast<std::size_t>(i)] = static_cast<char>(v >> (8 * i));
+    return b;
+  };
+  const std::string json_chunk = le32(static_cast<std::uint32_t>(json.size())) + "JSON" + json;
+  const std::string bin_chunk = le32(8) + std::string("BIN\0", 4) + std::string(8, '\0');
+  const std::string glb =
+      "glTF" + le32(2) +
+      le32(static_cast<std::uint32_t>(12 + json_chunk.size() + bin_chunk.size())) + json_chunk +
+      bin_chunk;
+  const std::string path = write("empty_buffer.glb", glb);
+  const std::string m = error_of(path);
+  EXPECT_EQ(m.rfind(path + ": not a readable glTF file: ", 0), 0u) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+}
+
 TEST_F(MeshFile, GltfNodeTransformsAndTheirParentsAreApplied) {
   // A 1 x 2 x 3 box about its origin, in a child node turned 90 degrees about z and moved 0.5 m
   // along x, under a parent moved to (1, 2, 3) and scaled by 2. The piece: a 4 x 2 x 6 box (the
