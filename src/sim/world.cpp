@@ -262,54 +262,6 @@ int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& 
 // deepest, then each time the one farthest from all kept so far (first in ODE's order on a tie).
 // A piece resting on a face with many corners keeps its support polygon's extremes; n <= keep
 // leaves the contacts as they are.
-// Whether geom a's bounding box lies wholly below plane b (a cheap gate: most pieces are above).
-bool wholly_below_plane(dGeomID a, dGeomID b) {
-  dVector4 plane;
-  dGeomPlaneGetParams(b, plane);
-  dReal box[6];
-  dGeomGetAABB(a, box);
-  double highest = 0.0;  // the largest n . x over the box's corners
-  for (int j = 0; j < 3; ++j) highest += std::max(plane[j] * box[2 * j], plane[j] * box[2 * j + 1]);
-  return highest < plane[3];
-}
-
-// The contacts of convex piece a (g1) wholly below ground plane b: its deepest vertices, at most
-// max_count. ODE's convex-plane collider answers only a piece that straddles the plane, so one
-// that falls past it within a step (farther than its own height: a 0.4 m cell at dt 0.1 s, or 8
-// of voronoi.ini's 1,000 cells at 1/60 s) got no contact and fell for ever. Here the plane is a
-// half-space, as it is for a box (dCollideBoxPlane), and the piece is pushed back out.
-int below_plane_contacts(dGeomID a, const WorldHull& ha, dGeomID b, int max_count,
-                         dContactGeom* out, int skip) {
-  dVector4 plane;
-  dGeomPlaneGetParams(b, plane);
-  const Eigen::Vector3d n(plane[0], plane[1], plane[2]);
-  std::vector<std::pair<double, std::size_t>> depth;  // depth below the plane, vertex
-  for (std::size_t i = 0; i < ha.vertices_m.size(); ++i) {
-    const double d = plane[3] - n.dot(ha.vertices_m[i]);
-    if (d <= 0.0) return 0;  // above or on it: ODE's collider has answered
-    depth.emplace_back(d, i);
-  }
-  const auto count = std::min<std::size_t>(depth.size(), static_cast<std::size_t>(max_count));
-  std::partial_sort(depth.begin(), depth.begin() + static_cast<std::ptrdiff_t>(count), depth.end(),
-                    [](const auto& x, const auto& y) { return x.first > y.first; });
-  auto* bytes = reinterpret_cast<char*>(out);
-  for (std::size_t k = 0; k < count; ++k) {
-    auto* c = reinterpret_cast<dContactGeom*>(bytes + static_cast<std::ptrdiff_t>(k) * skip);
-    const Eigen::Vector3d& v = ha.vertices_m[depth[k].second];
-    *c = dContactGeom{};
-    for (int j = 0; j < 3; ++j) {
-      c->pos[j] = v[j];
-      c->normal[j] = n[j];
-    }
-    c->depth = depth[k].first;
-    c->g1 = a;
-    c->g2 = b;
-    c->side1 = -1;
-    c->side2 = -1;
-  }
-  return static_cast<int>(count);
-}
-
 int keep_spread(dContactGeom* out, int n, int keep, int skip) {
   if (n <= keep) return n;
   auto* bytes = reinterpret_cast<char*>(out);
@@ -514,11 +466,8 @@ struct World::Impl {
               dContactGeom* out, int skip) const {
     const bool convex = shape_of(ta) != nullptr || shape_of(tb) != nullptr;
     if (convex && tb->kind == GeomKind::kGround) {
-      int n = dCollide(a, b, max_count, out, skip);
-      if (n == 0 && wholly_below_plane(a, b)) {
-        n = below_plane_contacts(a, hull_of(a, ta), b, max_count, out, skip);
-      }
-      return keep_spread(out, n, std::min(max_count, convex_ground_contacts), skip);
+      return keep_spread(out, dCollide(a, b, max_count, out, skip),
+                         std::min(max_count, convex_ground_contacts), skip);
     }
     if (!convex || tb->kind == GeomKind::kCameraSensor) return dCollide(a, b, max_count, out, skip);
     return convex_manifold(a, hull_of(a, ta), b, hull_of(b, tb), max_count, out, skip);
