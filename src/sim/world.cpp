@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "sim/ground_sweep.hpp"
 #include "sim/world_probe.hpp"
 
 namespace fragsim {
@@ -71,12 +72,18 @@ constexpr int kMaxContactsPerPair = 4;
 // A convex piece's face on the ground or on a box may have more than 4 corners; with only 4 of
 // them as contacts the piece would rest on part of its face and tip. Boxes keep 4, bit for bit.
 constexpr int kMaxConvexContacts = 8;
-// The constraint force mixing of a convex piece's ground contacts. Double-precision ODE's world
-// CFM is 1e-10, so a piece's up to 4 ground contacts (vertices below the plane, often nearly in a
-// line) leave the exact solver's LCP nearly singular: the soak found "LCP internal error, s <= 0"
-// (after which ODE zeroes the remaining rows' forces) on 27 Voronoi cells landing at dt 0.1 s.
-// 1e-5, ODE's single-precision default, keeps them regular; boxes keep the world's value.
-constexpr double kConvexGroundCfm = 1e-5;
+// The constraint force mixing of every ground contact, as a share: CFM = share x dt / m.
+// Double-precision ODE's world CFM is 1e-10, so a fragment's up to 4 ground contacts (corners
+// below the plane, coplanar or nearly in a line) leave the exact solver's LCP nearly singular, and
+// it fails ("LCP internal error, s <= 0", after which ODE zeroes the remaining rows' forces): the
+// soak found it on Voronoi cells landing at dt = 0.1 s, on hundreds of cubes resting at dt = 0.1 s
+// and on cubes pressed into the ground at dt = 1e-3 s with gravity off. ODE's CFM is absolute (a
+// contact keeps CFM x its force of approach speed), so one value is too soft for a heavy piece (a
+// 600 kg piece at 1e-4 rests 7 cm deep at dt = 0.1 s) and too stiff for a light one. Scaled by
+// dt / m, the regularisation relative to the rows is the share whatever the mass and step, a
+// contact keeps at most that share of the speed it takes away, and a resting piece sinks
+// share x g dt^2 / (contacts x ERP): 1.2 mm at dt = 0.1 s, 0.03 mm at 1/60 s.
+constexpr double kGroundCfmShare = 1e-2;
 
 // A fragment's convex hull in ODE's format (dCreateConvex keeps pointers to these arrays, so they
 // live as long as the world): planes (n, d), points, and per face its vertex count then indices.
@@ -343,6 +350,7 @@ struct World::Impl {
   std::vector<char> hit_flag;
   std::vector<int> hits;
   int wall_contact_count = 0;
+  double step_dt_s = 0.0;  // of the step being taken, for the ground contacts' CFM
   bool fragment_collisions = false;
   bool exact_solver = false;
   int convex_ground_contacts = kMaxConvexContacts;  // simulation.convex_ground_contacts
@@ -473,6 +481,20 @@ struct World::Impl {
     return convex_manifold(a, hull_of(a, ta), b, hull_of(b, tb), max_count, out, skip);
   }
 
+  // Speculative contacts for the awake convex pieces that could pass through the ground this step
+  // (ground_sweep.hpp); after the colliders' contacts, so a step that needs none is unchanged.
+  void sweep_pieces_to_ground(double dt_s) {
+    const GroundSweepDef def{ground.height_m, ground.friction, kGroundCfmShare,
+                             convex_ground_contacts};
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const ConvexShape* shape = constant[i].shape;
+      if (shape == nullptr || !dBodyIsEnabled(bodies[i])) continue;
+      add_ground_sweep_contacts(world, contacts, ground_geom,
+                                {bodies[i], geoms[i], shape->vertices_m, shape->radius_m}, dt_s,
+                                def);
+    }
+  }
+
   void on_pair(dGeomID a, dGeomID b) {
     const auto* ta = static_cast<const GeomTag*>(dGeomGetData(a));
     const auto* tb = static_cast<const GeomTag*>(dGeomGetData(b));
@@ -514,9 +536,9 @@ struct World::Impl {
       s.mu = mu;
       s.bounce = bounce;
       s.bounce_vel = 0.1;
-      if (convex && tb->kind == GeomKind::kGround) {
+      if (tb->kind == GeomKind::kGround) {
         s.mode |= dContactSoftCFM;
-        s.soft_cfm = kConvexGroundCfm;
+        s.soft_cfm = kGroundCfmShare * step_dt_s / constant[ta->fragment].mass_kg;
       }
       dJointID j = dJointCreateContact(world, contacts, &contact[i]);
       dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
@@ -731,9 +753,11 @@ void World::step(double dt_s) {
   for (int i : w.hits) w.hit_flag[static_cast<std::size_t>(i)] = 0;
   w.hits.clear();
   w.wall_contact_count = 0;
+  w.step_dt_s = dt_s;
   dSpaceCollide2(reinterpret_cast<dGeomID>(w.fragment_space),
                  reinterpret_cast<dGeomID>(w.static_space), &w, &Impl::near_callback);
   if (w.fragment_collisions) dSpaceCollide(w.fragment_space, &w, &Impl::near_callback);
+  if (w.ground_geom != nullptr) w.sweep_pieces_to_ground(dt_s);
   if (w.exact_solver) {
     dWorldStep(w.world, dt_s);
   } else {

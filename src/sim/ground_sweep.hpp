@@ -1,0 +1,42 @@
+#pragma once
+
+#include <ode/ode.h>
+
+#include <Eigen/Core>
+#include <span>
+
+namespace fragsim {
+
+// Speculative ground contacts for convex pieces: ODE's convex-plane collider answers only a piece
+// that straddles the plane, so a piece falling farther than its own height in one step would pass
+// wholly below it unseen and fall for ever (boxes do not: ODE's box-plane collider keeps every
+// corner below the plane). Before such a step, the piece's lowest corners get contacts at their
+// present positions, each allowed to approach the plane by no more than its gap in the step (ODE's
+// surface velocity along the normal, dContactMotionN = -gap / dt): the piece ends the step on the
+// plane, and ODE's own contacts take over from there, as Box2D's and Jolt's speculative contacts
+// do. A contact the piece does not need carries no force (and, with friction bounded by the
+// normal force, no friction).
+struct GroundSweepDef {
+  double height_m = 0.0;  // the plane y = height_m, normal +y
+  double friction = 0.0;
+  double cfm_share = 0.0;  // CFM = cfm_share x dt / mass, as the ground's contacts
+  int max_contacts = 4;    // lowest corners per piece
+};
+
+// The piece's corners (body frame, about the centre of mass) and its bounding radius.
+struct GroundSweepPiece {
+  dBodyID body = nullptr;
+  dGeomID geom = nullptr;
+  std::span<const Eigen::Vector3d> vertices_m;
+  double radius_m = 0.0;
+};
+
+// Adds the piece's speculative contacts to group, before the step of dt_s and after its forces:
+// at most def.max_contacts, its lowest corners that can reach the plane, and only if the piece
+// could end the step with more than half its height through the plane (a shallower landing is
+// left to ODE's contacts, as a box's is). Returns how many it added.
+int add_ground_sweep_contacts(dWorldID world, dJointGroupID group, dGeomID plane,
+                              const GroundSweepPiece& piece, double dt_s,
+                              const GroundSweepDef& def);
+
+}  // namespace fragsim
