@@ -18,17 +18,19 @@ namespace fragsim {
 // normal force, no friction).
 struct GroundSweepDef {
   double height_m = 0.0;  // the plane y = height_m, normal +y
+  double gravity_y_mps2 = 0.0;
   double friction = 0.0;
   double cfm_share = 0.0;  // CFM = cfm_share x dt / mass, as the ground's contacts
   int max_contacts = 4;    // lowest corners per piece
 };
 
-// The piece's corners (body frame, about the centre of mass) and its bounding radius.
+// The piece's corners (body frame, about the centre of mass), bounding radius and mass.
 struct GroundSweepPiece {
   dBodyID body = nullptr;
   dGeomID geom = nullptr;
   std::span<const Eigen::Vector3d> vertices_m;
   double radius_m = 0.0;
+  double mass_kg = 0.0;
 };
 
 // Adds the piece's speculative contacts to group, before the step of dt_s and after its forces:

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -23,9 +24,17 @@ namespace {
 // ODE reports through process-wide hooks that carry no context pointer, so its warnings can only
 // be counted process-wide; runs read the counter before and after (World::ode_messages).
 std::atomic<long> g_ode_messages{0};
+// The exact solver's LCP failures are counted apart: World::step redoes such a step, and counts
+// that (World::exact_step_retries); a failure it could not redo would still be a message.
+std::atomic<long> g_lcp_failures{0};
+std::atomic<long> g_exact_step_retries{0};
 
-void count_message(int, const char*, va_list) {
-  ++g_ode_messages;
+void count_message(int, const char* msg, va_list) {
+  if (std::strncmp(msg, "LCP internal error", 18) == 0) {
+    ++g_lcp_failures;
+  } else {
+    ++g_ode_messages;
+  }
 }
 
 // ODE exits (errors) or aborts (debug checks) after its hook returns: say what happened first, as
@@ -72,18 +81,18 @@ constexpr int kMaxContactsPerPair = 4;
 // A convex piece's face on the ground or on a box may have more than 4 corners; with only 4 of
 // them as contacts the piece would rest on part of its face and tip. Boxes keep 4, bit for bit.
 constexpr int kMaxConvexContacts = 8;
-// The constraint force mixing of every ground contact, as a share: CFM = share x dt / m.
-// Double-precision ODE's world CFM is 1e-10, so a fragment's up to 4 ground contacts (corners
-// below the plane, coplanar or nearly in a line) leave the exact solver's LCP nearly singular, and
-// it fails ("LCP internal error, s <= 0", after which ODE zeroes the remaining rows' forces): the
-// soak found it on Voronoi cells landing at dt = 0.1 s, on hundreds of cubes resting at dt = 0.1 s
-// and on cubes pressed into the ground at dt = 1e-3 s with gravity off. ODE's CFM is absolute (a
-// contact keeps CFM x its force of approach speed), so one value is too soft for a heavy piece (a
-// 600 kg piece at 1e-4 rests 7 cm deep at dt = 0.1 s) and too stiff for a light one. Scaled by
-// dt / m, the regularisation relative to the rows is the share whatever the mass and step, a
-// contact keeps at most that share of the speed it takes away, and a resting piece sinks
-// share x g dt^2 / (contacts x ERP): 1.2 mm at dt = 0.1 s, 0.03 mm at 1/60 s.
-constexpr double kGroundCfmShare = 1e-2;
+// The constraint force mixing of a convex piece's ground contacts. Double-precision ODE's world
+// CFM is 1e-10, so a piece's up to 4 ground contacts (vertices below the plane, often nearly in a
+// line) leave the exact solver's LCP nearly singular: the soak found "LCP internal error, s <= 0"
+// on 27 Voronoi cells landing at dt 0.1 s. 1e-5, ODE's single-precision default, makes it rarer;
+// boxes keep the world's value. No value makes it never happen (the soak found it at every CFM
+// tried, on cells and on cubes), so World::step also redoes a step whose LCP failed.
+constexpr double kConvexGroundCfm = 1e-5;
+// The speculative contacts' CFM as a share, CFM = share x dt / m (ground_sweep.hpp): ODE's CFM is
+// absolute (a contact keeps CFM x its force of approach speed), so a fixed value would let a
+// heavy piece through; scaled by dt / m a contact keeps at most this share of the speed it takes
+// away, whatever the mass and step.
+constexpr double kSweepCfmShare = 1e-2;
 
 // A fragment's convex hull in ODE's format (dCreateConvex keeps pointers to these arrays, so they
 // live as long as the world): planes (n, d), points, and per face its vertex count then indices.
@@ -350,7 +359,6 @@ struct World::Impl {
   std::vector<char> hit_flag;
   std::vector<int> hits;
   int wall_contact_count = 0;
-  double step_dt_s = 0.0;  // of the step being taken, for the ground contacts' CFM
   bool fragment_collisions = false;
   bool exact_solver = false;
   int convex_ground_contacts = kMaxConvexContacts;  // simulation.convex_ground_contacts
@@ -374,6 +382,45 @@ struct World::Impl {
   // A culled fragment whose bounding sphere comes this close to the eye (plus its radius) is
   // woken: the camera body's, or the wall's, farthest point from the eye.
   double wake_radius_m = 0.0;
+
+  // Every body's state before an exact step, to redo the step if its LCP fails.
+  struct SavedBody {
+    dBodyID body;
+    std::array<dReal, 3> position, linear_vel, angular_vel, force, torque;
+    std::array<dReal, 4> quaternion;
+  };
+  std::vector<SavedBody> saved;
+
+  void save_bodies() {
+    saved.clear();
+    auto save = [&](dBodyID b) {
+      if (b == nullptr || !dBodyIsEnabled(b)) return;  // a disabled body is not stepped
+      SavedBody& s = saved.emplace_back();
+      s.body = b;
+      auto copy = [](const dReal* from, auto& to) { std::copy_n(from, to.size(), to.begin()); };
+      copy(dBodyGetPosition(b), s.position);
+      copy(dBodyGetQuaternion(b), s.quaternion);
+      copy(dBodyGetLinearVel(b), s.linear_vel);
+      copy(dBodyGetAngularVel(b), s.angular_vel);
+      copy(dBodyGetForce(b), s.force);
+      copy(dBodyGetTorque(b), s.torque);
+    };
+    for (dBodyID b : bodies) save(b);
+    save(camera_body);
+    save(wall_body);
+  }
+
+  void restore_bodies() {
+    for (const SavedBody& s : saved) {
+      if (!dBodyIsEnabled(s.body)) dBodyEnable(s.body);  // ODE's auto-disable ran in the step
+      dBodySetPosition(s.body, s.position[0], s.position[1], s.position[2]);
+      dBodySetQuaternion(s.body, s.quaternion.data());
+      dBodySetLinearVel(s.body, s.linear_vel[0], s.linear_vel[1], s.linear_vel[2]);
+      dBodySetAngularVel(s.body, s.angular_vel[0], s.angular_vel[1], s.angular_vel[2]);
+      dBodySetForce(s.body, s.force[0], s.force[1], s.force[2]);
+      dBodySetTorque(s.body, s.torque[0], s.torque[1], s.torque[2]);
+    }
+  }
 
   bool asleep(std::size_t i) const { return !culled[i] && !dBodyIsEnabled(bodies[i]); }
 
@@ -484,14 +531,16 @@ struct World::Impl {
   // Speculative contacts for the awake convex pieces that could pass through the ground this step
   // (ground_sweep.hpp); after the colliders' contacts, so a step that needs none is unchanged.
   void sweep_pieces_to_ground(double dt_s) {
-    const GroundSweepDef def{ground.height_m, ground.friction, kGroundCfmShare,
+    dVector3 g;
+    dWorldGetGravity(world, g);
+    const GroundSweepDef def{ground.height_m, g[1], ground.friction, kSweepCfmShare,
                              convex_ground_contacts};
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-      const ConvexShape* shape = constant[i].shape;
-      if (shape == nullptr || !dBodyIsEnabled(bodies[i])) continue;
-      add_ground_sweep_contacts(world, contacts, ground_geom,
-                                {bodies[i], geoms[i], shape->vertices_m, shape->radius_m}, dt_s,
-                                def);
+      const FragmentState& c = constant[i];
+      if (c.shape == nullptr || !dBodyIsEnabled(bodies[i])) continue;
+      add_ground_sweep_contacts(
+          world, contacts, ground_geom,
+          {bodies[i], geoms[i], c.shape->vertices_m, c.shape->radius_m, c.mass_kg}, dt_s, def);
     }
   }
 
@@ -536,9 +585,9 @@ struct World::Impl {
       s.mu = mu;
       s.bounce = bounce;
       s.bounce_vel = 0.1;
-      if (tb->kind == GeomKind::kGround) {
+      if (convex && tb->kind == GeomKind::kGround) {
         s.mode |= dContactSoftCFM;
-        s.soft_cfm = kGroundCfmShare * step_dt_s / constant[ta->fragment].mass_kg;
+        s.soft_cfm = kConvexGroundCfm;
       }
       dJointID j = dJointCreateContact(world, contacts, &contact[i]);
       dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
@@ -753,13 +802,23 @@ void World::step(double dt_s) {
   for (int i : w.hits) w.hit_flag[static_cast<std::size_t>(i)] = 0;
   w.hits.clear();
   w.wall_contact_count = 0;
-  w.step_dt_s = dt_s;
   dSpaceCollide2(reinterpret_cast<dGeomID>(w.fragment_space),
                  reinterpret_cast<dGeomID>(w.static_space), &w, &Impl::near_callback);
   if (w.fragment_collisions) dSpaceCollide(w.fragment_space, &w, &Impl::near_callback);
   if (w.ground_geom != nullptr) w.sweep_pieces_to_ground(dt_s);
   if (w.exact_solver) {
+    // ODE's Dantzig solver can fail on an island ("LCP internal error, s <= 0", nearly dependent
+    // contact and friction rows) and then leaves that island's remaining forces at zero. No CFM
+    // rules it out, so a failed step is redone from the state before it with the iterative
+    // solver, which cannot fail that way; the contacts are still in their group.
+    w.save_bodies();
+    const long failures = g_lcp_failures.load();
     dWorldStep(w.world, dt_s);
+    if (g_lcp_failures.load() != failures) {
+      w.restore_bodies();
+      dWorldQuickStep(w.world, dt_s);
+      ++g_exact_step_retries;
+    }
   } else {
     dWorldQuickStep(w.world, dt_s);
   }
@@ -793,6 +852,10 @@ int World::wall_contacts() const {
 
 long World::ode_messages() {
   return g_ode_messages.load();
+}
+
+long World::exact_step_retries() {
+  return g_exact_step_retries.load();
 }
 
 std::vector<ProbeContact> WorldProbe::contacts(const World& world, int fragment, ProbeTarget target,

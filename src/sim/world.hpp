@@ -57,8 +57,11 @@ class World {
   // Contact points between fragments and the wall in the last step.
   int wall_contacts() const;
 
-  // Warnings ODE has printed in this process so far (its message hook has no context).
+  // Warnings ODE has printed in this process so far (its message hook has no context), but for
+  // the exact solver's LCP failures that step() redid.
   static long ode_messages();
+  // Exact steps redone with the iterative solver after ODE's LCP failed, in this process so far.
+  static long exact_step_retries();
 
   // The version string of the ODE library, for reports.
   static std::string ode_version();

@@ -95,10 +95,7 @@ TEST(AutoDisable, PushWakesASleepingFragmentAndMovesItByFOverM) {
   const double expected_m = force_N / kMass_kg * kDt_s * kDt_s;
   const Eigen::Vector3d moved = position_of(world, 0) - before;
   EXPECT_NEAR(moved.x(), expected_m, 1e-12);
-  // Vertically only the ground contacts' softness: their CFM (1e-2 x dt / m, world.cpp) lets a
-  // resting cube settle toward 1e-2 g dt^2 / (4 corners x ERP 0.2) = 34 um below a stiff rest, a
-  // little of which is left when it falls asleep.
-  EXPECT_NEAR(moved.y(), 0.0, 3.4e-5);
+  EXPECT_NEAR(moved.y(), 0.0, 1e-9);
   EXPECT_NEAR(moved.z(), 0.0, 1e-12);
   EXPECT_NEAR(world.init_states()[0].velocity_mps.x(), force_N / kMass_kg * kDt_s, 1e-12);
 }

@@ -18,6 +18,7 @@
 #include "experiments/evaluation.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
+#include "sim/world.hpp"
 #include "stress/health_observer.hpp"
 #include "stress/stress_scenes.hpp"
 
@@ -62,7 +63,7 @@ const char* mode_name(const Scene& s) {
 
 struct Totals {
   long scenes = 0, runs = 0, failed_scenes = 0;
-  long nonfinite = 0, ode_messages = 0, over_cap = 0, energy = 0, unexpected = 0;
+  long nonfinite = 0, ode_messages = 0, exact_retries = 0, over_cap = 0, energy = 0, unexpected = 0;
   long above_1000 = 0, at_largest = 0, voronoi = 0, gravity_off = 0, collisions = 0;
   long dt_min = 0, dt_max = 0, caps_zero = 0, caps_huge = 0, fast_blast = 0, fast_camera = 0;
   std::map<std::string, long> modes;
@@ -92,7 +93,9 @@ int main(int argc, char** argv) {
     const StressCase c = random_case(seed, budget);
     const Scene& sc = c.scene;
     HealthObserver health;
+    const long retries_before = World::exact_step_retries();
     const std::vector<Evaluation> runs = compare(sc, strategies, true, &health);
+    t.exact_retries += World::exact_step_retries() - retries_before;
     long bad = 0;
     std::string why;
     auto fail = [&](const std::string& what, long n) {
@@ -152,13 +155,14 @@ int main(int argc, char** argv) {
     std::fflush(stdout);
   }
   std::printf(
-      "soak: scenes %ld runs %ld failed_scenes %ld nonfinite %ld ode_messages %ld over_cap %ld "
+      "soak: scenes %ld runs %ld failed_scenes %ld nonfinite %ld ode_messages %ld "
+      "exact_step_retries %ld over_cap %ld "
       "energy %ld unexpected_forces %ld above_1000 %ld at_largest %ld largest %d voronoi %ld "
       "gravity_off %ld collisions %ld dt_1e-3 %ld dt_0.1 %ld cap_0 %ld cap_1e6 %ld blast_200 %ld "
       "camera_100 %ld",
-      t.scenes, t.runs, t.failed_scenes, t.nonfinite, t.ode_messages, t.over_cap, t.energy,
-      t.unexpected, t.above_1000, t.at_largest, t.largest, t.voronoi, t.gravity_off, t.collisions,
-      t.dt_min, t.dt_max, t.caps_zero, t.caps_huge, t.fast_blast, t.fast_camera);
+      t.scenes, t.runs, t.failed_scenes, t.nonfinite, t.ode_messages, t.exact_retries, t.over_cap,
+      t.energy, t.unexpected, t.above_1000, t.at_largest, t.largest, t.voronoi, t.gravity_off,
+      t.collisions, t.dt_min, t.dt_max, t.caps_zero, t.caps_huge, t.fast_blast, t.fast_camera);
   for (const auto& [mode, n] : t.modes) std::printf(" mode_%s %ld", mode.c_str(), n);
   std::printf("\n");
   return t.failed_scenes > 0 ? 1 : 0;
