@@ -13,6 +13,7 @@
 #include "sim/camera_path.hpp"
 #include "sim/world.hpp"
 #include "support/convex_shapes.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
@@ -20,13 +21,9 @@ namespace {
 constexpr double kG_mps2 = 9.81;
 
 Scene still_scene() {
-  Scene s;
-  s.name = "sweep";
-  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
-  s.camera.speed_mps = 0.0;
+  Scene s = test::still_camera_scene("sweep");
   s.sim.gravity_mps2 = {0.0, -kG_mps2, 0.0};
-  return s;  // ground on at y = 0
+  return s;
 }
 
 // A cube-shaped convex piece of half edge half_m, its lowest face gap_m above the ground, falling

@@ -16,6 +16,7 @@
 #include "sim/world.hpp"
 #include "sim/world_probe.hpp"
 #include "support/convex_shapes.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
@@ -31,12 +32,7 @@ using test::regular_tetrahedron;
 
 // A still camera at (0, 1.6, 0) looking down -z (right +x, up +y), ground at y = 0.
 Scene still_scene() {
-  Scene s;
-  s.name = "convex";
-  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
-  s.camera.speed_mps = 0.0;
-  return s;
+  return test::still_camera_scene("convex");
 }
 
 FragmentSpawn piece(std::shared_ptr<const ConvexShape> shape, const Eigen::Vector3d& position_m,

@@ -7,6 +7,7 @@
 
 #include "sim/camera_path.hpp"
 #include "sim/world.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
@@ -17,12 +18,19 @@ constexpr double kHalf_m = 0.05;
 // A still camera at (0, 1.6, 0) looking down -z; the wall 0.6 m ahead, 5 cm thick: z in
 // [-0.625, -0.575]. Gravity (0, 0, +2 m/s^2) pulls toward the camera; the ground is far below.
 Scene wall_scene() {
-  Scene s;
-  s.name = "wall";
+  Scene s = test::still_camera_scene("wall");
   s.sim.gravity_mps2 = {0.0, 0.0, 2.0};
-  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
-  s.camera.speed_mps = 0.0;
+  return s;
+}
+
+// A 10 cm cube of 0.5 kg, not spinning.
+FragmentSpawn cube(const Eigen::Vector3d& position_m, const Eigen::Vector3d& velocity_mps) {
+  FragmentSpawn s;
+  s.position_m = position_m;
+  s.velocity_mps = velocity_mps;
+  s.angular_velocity_radps.setZero();
+  s.half_extents_m = Eigen::Vector3d::Constant(kHalf_m);
+  s.mass_kg = 0.5;
   return s;
 }
 
@@ -38,13 +46,7 @@ WorldNeeds wall_needs() {
 TEST(WallWorld, FragmentBornInsideTheWallPassesOutThenBouncesLikeAnyOther) {
   const Scene scene = wall_scene();
   const CameraPath path(scene.camera);
-  FragmentSpawn s;
-  s.position_m = {0.0, 1.6, -0.6};
-  s.velocity_mps = {0.0, 0.0, -1.0};
-  s.angular_velocity_radps.setZero();
-  s.half_extents_m = Eigen::Vector3d::Constant(kHalf_m);
-  s.mass_kg = 0.5;
-  World world(scene, wall_needs(), {s});
+  World world(scene, wall_needs(), {cube({0.0, 1.6, -0.6}, {0.0, 0.0, -1.0})});
   std::vector<FragmentState> state = world.init_states();
   int contacts = 0;
   double after_first_contact_mps = 0.0;
@@ -76,13 +78,8 @@ TEST(WallWorld, FragmentBornInsideTheWallPassesOutThenBouncesLikeAnyOther) {
 TEST(WallWorld, FragmentOutsideTheWallBouncesOffIt) {
   const Scene scene = wall_scene();
   const CameraPath path(scene.camera);
-  FragmentSpawn s;
-  s.position_m = {0.0, 1.6, -0.7};  // its near face 2.5 cm short of the wall's back face
-  s.velocity_mps = {0.0, 0.0, 3.0};
-  s.angular_velocity_radps.setZero();
-  s.half_extents_m = Eigen::Vector3d::Constant(kHalf_m);
-  s.mass_kg = 0.5;
-  World world(scene, wall_needs(), {s});
+  // Its near face 2.5 cm short of the wall's back face.
+  World world(scene, wall_needs(), {cube({0.0, 1.6, -0.7}, {0.0, 0.0, 3.0})});
   std::vector<FragmentState> state = world.init_states();
   int contacts = 0;
   for (int k = 0; k < 10; ++k) {

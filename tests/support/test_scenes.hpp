@@ -24,6 +24,17 @@ inline FragmentState box_at(const Eigen::Vector3d& p, double half_m) {
   return f;
 }
 
+// The default scene with a still camera at (0, 1.6, 0) looking down -z (right = +x, up = +y);
+// the ground on at y = 0.
+inline Scene still_camera_scene(const std::string& name) {
+  Scene s;
+  s.name = name;
+  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
+  s.camera.look_at_m = {{0.0, 1.6, -10.0}};
+  s.camera.speed_mps = 0.0;
+  return s;
+}
+
 // A still camera at (0, 1.6, 0) looking down -z (right = +x, up = +y), and one 0.1 m box at
 // `start_m` moving at `speed_mps` along +z (toward the camera) with no gravity, no spin, no ground.
 inline Scene single_fragment(const Eigen::Vector3d& start_m, double speed_mps = 10.0) {
