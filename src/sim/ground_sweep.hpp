@@ -7,21 +7,18 @@
 
 namespace fragsim {
 
-// Speculative ground contacts for convex pieces: ODE's convex-plane collider answers only a piece
+// A speculative ground contact for convex pieces: ODE's convex-plane collider answers only a piece
 // that straddles the plane, so a piece falling farther than its own height in one step would pass
 // wholly below it unseen and fall for ever (boxes do not: ODE's box-plane collider keeps every
-// corner below the plane). Before such a step, the piece's lowest corners get contacts at their
-// present positions, each allowed to approach the plane by no more than its gap in the step (ODE's
-// surface velocity along the normal, dContactMotionN = -gap / dt): the piece ends the step on the
-// plane, and ODE's own contacts take over from there, as Box2D's and Jolt's speculative contacts
-// do. A contact the piece does not need carries no force (and, with friction bounded by the
-// normal force, no friction).
+// corner below the plane). Before such a step the piece gets one contact at its centre of mass,
+// allowed to approach the plane by no more than the lowest corner's gap in the step (ODE's surface
+// velocity along the normal, dContactMotionN = -gap / dt): the piece ends the step on the plane,
+// and ODE's own contacts take over from there, as with Box2D's and Jolt's speculative contacts.
 struct GroundSweepDef {
   double height_m = 0.0;  // the plane y = height_m, normal +y
   double gravity_y_mps2 = 0.0;
   double friction = 0.0;
   double cfm_share = 0.0;  // CFM = cfm_share x dt / mass, as the ground's contacts
-  int max_contacts = 4;    // lowest corners per piece
 };
 
 // The piece's corners (body frame, about the centre of mass), bounding radius and mass.
@@ -33,10 +30,9 @@ struct GroundSweepPiece {
   double mass_kg = 0.0;
 };
 
-// Adds the piece's speculative contacts to group, before the step of dt_s and after its forces:
-// at most def.max_contacts, its lowest corners that can reach the plane, and only if the piece
-// could end the step with more than half its height through the plane (a shallower landing is
-// left to ODE's contacts, as a box's is). Returns how many it added.
+// Adds the piece's speculative contact to group, before the step of dt_s and after its forces,
+// if the step would carry its centre down by more than half its height above the plane (a
+// shallower landing is left to ODE's contacts, as a box's is). Returns how many it added (0, 1).
 int add_ground_sweep_contacts(dWorldID world, dJointGroupID group, dGeomID plane,
                               const GroundSweepPiece& piece, double dt_s,
                               const GroundSweepDef& def);

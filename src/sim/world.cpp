@@ -92,7 +92,7 @@ constexpr double kConvexGroundCfm = 1e-5;
 // absolute (a contact keeps CFM x its force of approach speed), so a fixed value would let a
 // heavy piece through; scaled by dt / m a contact keeps at most this share of the speed it takes
 // away, whatever the mass and step.
-constexpr double kSweepCfmShare = 1e-2;
+constexpr double kSweepCfmShare = 1e-3;
 
 // A fragment's convex hull in ODE's format (dCreateConvex keeps pointers to these arrays, so they
 // live as long as the world): planes (n, d), points, and per face its vertex count then indices.
@@ -547,13 +547,12 @@ struct World::Impl {
     });
   }
 
-  // Speculative contacts for the awake convex pieces that could pass through the ground this step
+  // A speculative contact for each awake convex piece that could pass through the ground this step
   // (ground_sweep.hpp); after the colliders' contacts, so a step that needs none is unchanged.
   void sweep_pieces_to_ground(double dt_s) {
     dVector3 g;
     dWorldGetGravity(world, g);
-    const GroundSweepDef def{ground.height_m, g[1], ground.friction, kSweepCfmShare,
-                             convex_ground_contacts};
+    const GroundSweepDef def{ground.height_m, g[1], ground.friction, kSweepCfmShare};
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       const FragmentState& c = constant[i];
       if (c.shape == nullptr || !dBodyIsEnabled(bodies[i])) continue;

@@ -220,7 +220,7 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   EXPECT_EQ(runs.back().summary.near_fragments, 0);
   EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
-  EXPECT_EQ(fnv1a(csv), 0xe9de95ad5eb90a44ull) << csv;
+  EXPECT_EQ(fnv1a(csv), 0xea6337157091b9dcull) << csv;
 }
 
 // `fade` on the default scene, pinned, with the numbers the README reads: physics untouched (no

@@ -67,13 +67,13 @@ std::vector<Landing> drop(const Scene& scene, const std::vector<FragmentSpawn>& 
 
 // A 10 cm cube of 0.5 kg 0.1 m above the ground at 30 m/s, dt 1/60 s: free flight would carry it
 // 0.5 m in the step, to 0.4 m below the ground with its top 0.3 m below, where nothing would ever
-// stop it. The sweep lets its lowest face approach by its gap only, -gap / dt = -6 m/s, less what
-// the contacts' CFM keeps (the sweep's share 1e-2 of the 24 m/s taken away, over 4 corners: 0.06
-// m/s, 1 mm in the step): it ends the step on the plane and rests there.
+// stop it. The sweep's contact lets its centre approach by the lowest face's gap only,
+// -gap / dt = -6 m/s, less what the contact's CFM keeps (world.cpp's share 1e-3 of the 24 m/s
+// taken away: 0.024 m/s, 0.4 mm in the step): it ends the step on the plane and rests there.
 TEST(GroundSweep, FastPieceEndsTheStepOnTheGroundAndRests) {
   const double dt_s = 1.0 / 60.0;
   const std::vector<Landing> l = drop(still_scene(), falling_cube(0.05, 0.1, 30.0, 0.5), dt_s, 120);
-  const double kept_mps = 0.01 * (30.0 + kG_mps2 * dt_s - 6.0) / 4.0;
+  const double kept_mps = 1e-3 * (30.0 + kG_mps2 * dt_s - 6.0);
   EXPECT_NEAR(l[0].velocity_y_mps, -6.0 - kept_mps, 1e-3);
   EXPECT_NEAR(l[0].lowest_y_m, -kept_mps * dt_s, 2e-5);
   for (const Landing& s : l) EXPECT_GT(s.lowest_y_m, -0.01);
@@ -82,7 +82,8 @@ TEST(GroundSweep, FastPieceEndsTheStepOnTheGroundAndRests) {
 }
 
 // Heavy and fast at a long step (600 kg, 200 m/s, dt 0.1 s, a 1 m cube 1 m up): the sweep's
-// contacts keep 1% of the 190 m/s they take away, over 4 corners (0.48 m/s, 4.8 cm in the step).
+// contact keeps 0.1% of the 190 m/s it takes away (0.19 m/s, 1.9 cm in the step), whatever the
+// mass, where an absolute CFM would not (1e-5 x 1.1e6 N: 11 m/s).
 // The piece bounces (restitution 0.2) and lands again at 2 m/s, a landing of less than half its
 // height that is left to ODE (28 cm in); it never gets half its height through, and rests 8.4 mm
 // deep: the 1 mm surface layer plus the pieces' ground CFM (an absolute 1e-5, world.cpp) times
@@ -91,12 +92,25 @@ TEST(GroundSweep, HeavyPieceAtALongStepIsStoppedToo) {
   const double dt_s = 0.1;
   const std::vector<Landing> l =
       drop(still_scene(), falling_cube(0.5, 1.0, 200.0, 600.0), dt_s, 100);
-  const double kept_mps = 0.01 * (200.0 + kG_mps2 * dt_s - 10.0) / 4.0;
+  const double kept_mps = 1e-3 * (200.0 + kG_mps2 * dt_s - 10.0);
   EXPECT_NEAR(l[0].velocity_y_mps, -10.0 - kept_mps, 1e-2);
   EXPECT_NEAR(l[0].lowest_y_m, -kept_mps * dt_s, 1e-3);
   for (const Landing& s : l) EXPECT_GT(s.lowest_y_m, -0.5);
   EXPECT_NEAR(l.back().lowest_y_m, -0.001 - 1e-5 * 600.0 * kG_mps2 / 4.0 * dt_s / 0.2, 1e-4);
   EXPECT_NEAR(l.back().velocity_y_mps, 0.0, 1e-4);
+}
+
+// The fast cube of the first test spinning at 2,000 rad/s about x (5.3 turns a step):
+// the contact sits at the centre of mass, so the spin neither changes it nor is changed by it.
+// Contacts at the corners would hold the corners' velocities, spin included, to the gap: corners
+// sweeping down at 70 m/s would fling the cube up (the soak's seed 3023).
+TEST(GroundSweep, SpinningPieceLandsAsANonSpinningOne) {
+  const double dt_s = 1.0 / 60.0;
+  std::vector<FragmentSpawn> spawn = falling_cube(0.05, 0.1, 30.0, 0.5);
+  spawn[0].angular_velocity_radps = {2000.0, 0.0, 0.0};
+  const std::vector<Landing> l = drop(still_scene(), spawn, dt_s, 1);
+  const double kept_mps = 1e-3 * (30.0 + kG_mps2 * dt_s - 6.0);
+  EXPECT_NEAR(l[0].velocity_y_mps, -6.0 - kept_mps, 1e-3);
 }
 
 // 1 cm above the ground at 1 m/s: the step carries it 1.9 cm, into the plane by less than half its
