@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "sim/body_snapshot.hpp"
 #include "sim/ground_sweep.hpp"
 #include "sim/world_probe.hpp"
 
@@ -388,44 +389,7 @@ struct World::Impl {
   // woken: the camera body's, or the wall's, farthest point from the eye.
   double wake_radius_m = 0.0;
 
-  // Every body's state before an exact step, to redo the step if its LCP fails.
-  struct SavedBody {
-    dBodyID body;
-    std::array<dReal, 3> position, linear_vel, angular_vel, force, torque;
-    std::array<dReal, 4> quaternion;
-  };
-  std::vector<SavedBody> saved;
-
-  void save_bodies() {
-    saved.clear();
-    auto save = [&](dBodyID b) {
-      if (b == nullptr || !dBodyIsEnabled(b)) return;  // a disabled body is not stepped
-      SavedBody& s = saved.emplace_back();
-      s.body = b;
-      auto copy = [](const dReal* from, auto& to) { std::copy_n(from, to.size(), to.begin()); };
-      copy(dBodyGetPosition(b), s.position);
-      copy(dBodyGetQuaternion(b), s.quaternion);
-      copy(dBodyGetLinearVel(b), s.linear_vel);
-      copy(dBodyGetAngularVel(b), s.angular_vel);
-      copy(dBodyGetForce(b), s.force);
-      copy(dBodyGetTorque(b), s.torque);
-    };
-    for (dBodyID b : bodies) save(b);
-    save(camera_body);
-    save(wall_body);
-  }
-
-  void restore_bodies() {
-    for (const SavedBody& s : saved) {
-      if (!dBodyIsEnabled(s.body)) dBodyEnable(s.body);  // ODE's auto-disable ran in the step
-      dBodySetPosition(s.body, s.position[0], s.position[1], s.position[2]);
-      dBodySetQuaternion(s.body, s.quaternion.data());
-      dBodySetLinearVel(s.body, s.linear_vel[0], s.linear_vel[1], s.linear_vel[2]);
-      dBodySetAngularVel(s.body, s.angular_vel[0], s.angular_vel[1], s.angular_vel[2]);
-      dBodySetForce(s.body, s.force[0], s.force[1], s.force[2]);
-      dBodySetTorque(s.body, s.torque[0], s.torque[1], s.torque[2]);
-    }
-  }
+  BodySnapshot before_step;  // every awake body before an exact step, to redo it if it fails
 
   bool asleep(std::size_t i) const { return !culled[i] && !dBodyIsEnabled(bodies[i]); }
 
@@ -848,11 +812,12 @@ void World::step(double dt_s) {
     // contact and friction rows) and then leaves that island's remaining forces at zero. No CFM
     // rules it out, so a failed step is redone from the state before it with the iterative
     // solver, which cannot fail that way; the contacts are still in their group.
-    w.save_bodies();
+    const std::array<dBodyID, 2> carried{w.camera_body, w.wall_body};
+    w.before_step.save(w.bodies, carried);
     const long failures = g_lcp_failures.load();
     dWorldStep(w.world, dt_s);
     if (g_lcp_failures.load() != failures) {
-      w.restore_bodies();
+      w.before_step.restore();
       dWorldQuickStep(w.world, dt_s);
       ++g_exact_step_retries;
     }
