@@ -18,7 +18,7 @@ struct GroundSweepDef {
   double height_m = 0.0;  // the plane y = height_m, normal +y
   double gravity_y_mps2 = 0.0;
   double friction = 0.0;
-  double cfm_share = 0.0;  // CFM = cfm_share x dt / mass, as the ground's contacts
+  double cfm_share = 0.0;  // CFM = cfm_share x dt / mass
 };
 
 // The piece's corners (body frame, about the centre of mass), bounding radius and mass.
