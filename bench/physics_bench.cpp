@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <string>
@@ -185,6 +186,16 @@ void BM_PhysicsShapes(benchmark::State& state, Piece piece, Phase phase, int con
   }
   for (auto _ : state) advance();
   state.counters["awake_at_end"] = world.awake_count();
+  if (phase == Phase::kFlight) return;
+  // A piece that passed through the ground costs no contacts: the count keeps the times honest
+  // (before src/sim/ground_sweep.cpp, with 4 ground contacts a piece, 269 of the random hulls and
+  // 46 of the cells were wholly below it by the end).
+  std::vector<fragsim::FragmentState> states = world.init_states();
+  world.read(states);
+  const double ground_y_m = scene.ground.height_m;
+  state.counters["below_ground_at_end"] = static_cast<double>(std::count_if(
+      states.begin(), states.end(),
+      [&](const fragsim::FragmentState& f) { return f.position_m.y() + f.radius_m < ground_y_m; }));
 }
 
 #define PHYSICS_SHAPES(name, ...)                        \

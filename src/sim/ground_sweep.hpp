@@ -14,6 +14,9 @@ namespace fragsim {
 // allowed to approach the plane by no more than the lowest corner's gap in the step (ODE's surface
 // velocity along the normal, dContactMotionN = -gap / dt): the piece ends the step on the plane,
 // and ODE's own contacts take over from there, as with Box2D's and Jolt's speculative contacts.
+// A piece that already straddles the plane gets the same contact when the step would carry its
+// centre past the plane: ODE's contacts hold its corners, and a piece struck on a corner turns
+// about it with most of its centre's speed; its centre comes down to the plane, no farther.
 struct GroundSweepDef {
   double height_m = 0.0;  // the plane y = height_m, normal +y
   double gravity_y_mps2 = 0.0;
@@ -32,7 +35,8 @@ struct GroundSweepPiece {
 
 // Adds the piece's speculative contact to group, before the step of dt_s and after its forces,
 // if the step would carry its centre down by more than half its height above the plane (a
-// shallower landing is left to ODE's contacts, as a box's is). Returns how many it added (0, 1).
+// shallower landing is left to ODE's contacts, as a box's is), or, straddling, past the plane.
+// Returns how many it added (0, 1).
 int add_ground_sweep_contacts(dWorldID world, dJointGroupID group, dGeomID plane,
                               const GroundSweepPiece& piece, double dt_s,
                               const GroundSweepDef& def);
