@@ -32,6 +32,9 @@ int add_ground_sweep_contacts(dWorldID world, dJointGroupID group, dGeomID plane
     lowest_m = std::min(lowest_m, g);
     highest_m = std::max(highest_m, g);
   }
+  // One already wholly below came there some other way (a strategy's force through resting
+  // contacts) that a sweep cannot undo.
+  if (highest_m <= 0.0) return 0;
   // How far the centre may come down in this step. Above the plane: by the lowest corner's gap,
   // so the piece ends the step on it; a landing shallower than half its height is left to ODE's
   // collider, which answers the piece once it straddles. Straddling: ODE's corner contacts hold
@@ -39,8 +42,8 @@ int add_ground_sweep_contacts(dWorldID world, dJointGroupID group, dGeomID plane
   // its centre's speed (a rod struck at its end, three quarters), so a fast one could carry its
   // centre past the plane and end wholly below, out of the corners' reach (the physics
   // benchmark's random hulls at 8 m/s: 3 of 1,000). So its centre may come down to the plane, no
-  // farther. A centre already below is not pushed back up: that would be a half-space contact
-  // after the fact, which gains energy; ODE's contacts bring it out.
+  // farther. A centre already below is held where it is, not pushed back up: that would be a
+  // half-space contact after the fact, which gains energy; ODE's contacts bring it out.
   double allowed_m = lowest_m;
   if (lowest_m > 0.0) {
     if (descent_m <= 0.5 * (lowest_m + highest_m)) return 0;
