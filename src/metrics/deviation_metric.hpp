@@ -1,5 +1,5 @@
 #pragma once
-// Trajectory deviation (METHOD.md section 6): each fragment's distance to the same fragment of the
+// Trajectory deviation (docs/method.md section 6): each fragment's distance to the same fragment of the
 // reference run (the `none` run of the same scene and seed) at the same step. A fragment's
 // deviation is the largest such distance over the run, step 0 included.
 

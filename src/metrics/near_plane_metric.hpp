@@ -1,5 +1,5 @@
 #pragma once
-// Near-plane intersections and camera hits (METHOD.md section 6). A fragment intersects the near
+// Near-plane intersections and camera hits (docs/method.md section 6). A fragment intersects the near
 // plane in a step when its box (a convex piece: the polytope itself, swept_box.hpp's HullSweep)
 // meets the near rectangle at any time during the step's motion (swept_box.hpp), tested with that
 // step's near distance; a camera hit is a touch of the camera body, reported by the physics'

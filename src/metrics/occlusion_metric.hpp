@@ -1,5 +1,5 @@
 #pragma once
-// Screen occlusion (METHOD.md section 6). After every step each fragment's box (or, for a convex
+// Screen occlusion (docs/method.md section 6). After every step each fragment's box (or, for a convex
 // piece, its hull: the vertices and the points where its edges cross the plane) is clipped at the
 // near plane in force then, projected, and its 2-D convex hull rasterised on a pixel grid; the
 // covered share of the viewport and of a central region (where the action is) form per-step

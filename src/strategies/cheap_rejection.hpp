@@ -1,6 +1,6 @@
 #pragma once
 // Cheap, conservative tests that settle, before any root solve, that a fragment's ballistic path
-// cannot meet a region: the camera's reachable ball (`edge`, METHOD.md section 3) or the
+// cannot meet a region: the camera's reachable ball (`edge`, docs/method.md section 3) or the
 // protected box (`edge-min`, section 4). They only ever answer "certainly clear"; anything in
 // doubt goes on to the exact solve, so the strategies' results do not change. Each keeps a margin
 // far beyond the root solver's rounding (first_root.hpp judges "touching" within ~1e-15 of the

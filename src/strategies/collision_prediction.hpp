@@ -1,5 +1,5 @@
 #pragma once
-// The thesis's collision prediction (section 3.2 of the thesis, METHOD.md section 3): the
+// The thesis's collision prediction (section 3.2 of the thesis, docs/method.md section 3): the
 // fragment's ballistic path against the ball the camera can reach before the fragment lands.
 
 #include <Eigen/Core>

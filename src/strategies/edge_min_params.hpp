@@ -1,5 +1,5 @@
 #pragma once
-// `edge-min`'s parameters (METHOD.md section 4) and their scene keys ([edge-min]).
+// `edge-min`'s parameters (docs/method.md section 4) and their scene keys ([edge-min]).
 
 #include <array>
 

@@ -1,5 +1,5 @@
 #pragma once
-// `edge-min`: the minimal force of METHOD.md section 4, generalised from the near plane to the
+// `edge-min`: the minimal force of docs/method.md section 4, generalised from the near plane to the
 // whole camera. Every step, every fragment's ballistic path relative to the camera (moving at its
 // current velocity) is tested against the protected box: the camera body and the near rectangle
 // (whichever is larger on each axis) grown by the fragment's bounding radius and a margin. A

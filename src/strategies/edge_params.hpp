@@ -1,5 +1,5 @@
 #pragma once
-// `edge`'s parameters (the thesis, METHOD.md section 3) and their scene keys ([edge]).
+// `edge`'s parameters (the thesis, docs/method.md section 3) and their scene keys ([edge]).
 
 #include "strategies/param_spec.hpp"
 #include "strategies/predictor.hpp"

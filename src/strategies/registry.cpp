@@ -57,14 +57,14 @@ const StrategyTable& strategy_table() {
       strategy_entry(
           "edge",
           "the thesis: ballistic prediction against the camera's reachable ball and the force "
-          "(3.4) toward the near rectangle's nearest edge (METHOD.md section 3)",
+          "(3.4) toward the near rectangle's nearest edge (docs/method.md section 3)",
           edge_param_spec(),
           [](const EdgeParams& p, const C&) { return std::make_unique<EdgeStrategy>(p); },
           &S::edge),
       strategy_entry(
           "edge-min",
           "the least constant push toward a screen edge that makes a threatening fragment miss "
-          "the camera body and near rectangle, re-solved every step (METHOD.md section 4)",
+          "the camera body and near rectangle, re-solved every step (docs/method.md section 4)",
           edge_min_param_spec(),
           [](const EdgeMinParams& p, const C&) { return std::make_unique<EdgeMinStrategy>(p); },
           &S::edge_min),

@@ -1,4 +1,4 @@
-// The thesis's results, reproduced in kind on the shipped scenes (METHOD.md section 8).
+// The thesis's results, reproduced in kind on the shipped scenes (docs/method.md section 8).
 
 #include <gtest/gtest.h>
 

@@ -345,7 +345,7 @@ std::vector<StressCase> corner_cases(const Budget& budget) {
   auto add = [&](const Spec& s) { out.push_back(build(s, budget, "corner/" + s.name, 1)); };
 
   Spec s;
-  // METHOD.md section 7: a fragment spawned inside the camera with zero velocity, zero gravity,
+  // docs/method.md section 7: a fragment spawned inside the camera with zero velocity, zero gravity,
   // the smallest step.
   s = Spec{};
   s.name = "one-fragment-inside-camera-at-rest";
