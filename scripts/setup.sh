@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian packages fragsim needs that are missing, then configures and builds a preset
-# (default: release). Usage: scripts/setup.sh [preset]
+# (default: release): every target, or only TARGET when given (scripts/compare.sh builds the tool
+# alone). Usage: scripts/setup.sh [preset [TARGET]]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
+target=()
+[ $# -ge 2 ] && target=(--target "$2")
 
 packages=(cmake g++ make pkg-config libode-dev libeigen3-dev libboost-program-options-dev
           googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev
@@ -12,4 +15,4 @@ packages=(cmake g++ make pkg-config libode-dev libeigen3-dev libboost-program-op
 scripts/install_packages.sh "${packages[@]}"
 
 cmake --preset "$preset" >/dev/null
-cmake --build --preset "$preset" -j"$(nproc)"
+cmake --build --preset "$preset" -j"$(nproc)" "${target[@]}"

@@ -154,8 +154,8 @@ namespace fragsim {
 namespace {
 
 TEST(SceneFile, EveryKeyIsDocumented) {
-  std::ifstream in(std::string(FRAGSIM_DATA_DIR) + "/scenes/README.md");
-  ASSERT_TRUE(in) << "data/scenes/README.md is missing";
+  std::ifstream in(std::string(FRAGSIM_DATA_DIR) + "/../docs/guide.md");
+  ASSERT_TRUE(in) << "docs/guide.md is missing";
   std::stringstream doc;
   doc << in.rdbuf();
   for (const auto& option : scene_options().options()) {
@@ -166,10 +166,10 @@ TEST(SceneFile, EveryKeyIsDocumented) {
     const std::string text = doc.str();
     const auto at = text.find("### [" + section + "]");
     if (!section.empty()) {
-      ASSERT_NE(at, std::string::npos) << "no section [" << section << "] in data/scenes/README.md";
+      ASSERT_NE(at, std::string::npos) << "no section [" << section << "] in docs/guide.md";
     }
     EXPECT_NE(text.find("| `" + key + "` |", section.empty() ? 0 : at), std::string::npos)
-        << full << " is not documented in data/scenes/README.md";
+        << full << " is not documented in docs/guide.md";
   }
 }
 

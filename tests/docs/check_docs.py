@@ -1,0 +1,417 @@
+#!/usr/bin/env python3
+"""The docs check (ctest Docs.Check, label docs): the documentation must match the tree.
+
+Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
+  ROOT     the repository's root
+  FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
+  --only   run only these checks: readme, outside, links, keys, folders, includes
+
+Fails (exit 1, one line per finding) when:
+  readme    README.md is over 200 lines or holds a date or a commit hash;
+  outside   a tracked file refers to the folder beside the repository (../shared);
+  links     a relative link in README.md, docs/*.md or data/scenes/README.md points to a missing
+            file or heading;
+  keys      the scene keys in docs/guide.md ("## Scene keys") and `fragsim compare --help`
+            differ in a key or a default;
+  folders   a folder listed in docs/architecture.md ("## Folders") does not exist, or a folder
+            under src/ is not listed;
+  includes  a file under src/ includes a folder of its own layer or a higher one (the "## Layers"
+            table of docs/architecture.md), or ODE or SDL outside the folder that owns it.
+Python standard library only.
+"""
+
+import os
+import re
+import subprocess
+import sys
+
+README_MAX_LINES = 200
+DATE = re.compile(r"20[0-9]{2}-[01][0-9]-[0-3][0-9]")
+HEX_TOKEN = re.compile(r"(?<![0-9A-Za-z_])[0-9a-f]{7,40}(?![0-9A-Za-z_])")
+# Spelled in two parts so that this file does not match itself.
+OUTSIDE = ".." + "/shared"
+
+failures = []
+
+
+def fail(check, message):
+    failures.append(f"docs check ({check}): {message}")
+
+
+def read(path):
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def section(text, heading):
+    """The lines of `text` under the `## heading` line, up to the next `## ` heading."""
+    lines = text.split("\n")
+    out, inside = [], False
+    for line in lines:
+        if line.startswith("## "):
+            if inside:
+                break
+            inside = line[3:].strip() == heading
+            continue
+        if inside:
+            out.append(line)
+    if not inside and not out:
+        return None
+    return out
+
+
+def without_code(text, inline=True):
+    """`text` with fenced code blocks blanked (line numbers kept) and, when `inline`, inline
+    code removed."""
+    out, fenced = [], False
+    for line in text.split("\n"):
+        if line.lstrip().startswith("```"):
+            fenced = not fenced
+            out.append("")
+            continue
+        out.append("" if fenced else re.sub(r"`[^`]*`", "", line) if inline else line)
+    return out
+
+
+# --- readme ---------------------------------------------------------------------------------
+
+def check_readme(root):
+    text = read(os.path.join(root, "README.md"))
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    if len(lines) > README_MAX_LINES:
+        fail("readme", f"README.md has {len(lines)} lines, at most {README_MAX_LINES} allowed")
+    for n, line in enumerate(lines, 1):
+        for m in DATE.finditer(line):
+            fail("readme", f"README.md:{n}: a date, '{m.group(0)}' (history goes to docs/CHANGELOG.md)")
+        for m in HEX_TOKEN.finditer(line):
+            token = m.group(0)
+            if re.search(r"[0-9]", token) and re.search(r"[a-f]", token):
+                fail("readme", f"README.md:{n}: a commit hash, '{token}'")
+
+
+# --- outside --------------------------------------------------------------------------------
+
+def tracked_files(root):
+    try:
+        out = subprocess.run(["git", "-C", root, "ls-files", "-z"], check=True,
+                             capture_output=True).stdout
+        return [p for p in out.decode().split("\0") if p]
+    except (OSError, subprocess.CalledProcessError):
+        files = []
+        for d, dirs, names in os.walk(root):
+            dirs[:] = [x for x in dirs if not x.startswith(".") and x != "build"]
+            files += [os.path.relpath(os.path.join(d, n), root) for n in names]
+        return files
+
+
+def check_outside(root):
+    for rel in tracked_files(root):
+        path = os.path.join(root, rel)
+        try:
+            with open(path, "rb") as f:
+                data = f.read()
+        except OSError:
+            continue
+        if b"\0" in data[:8192]:
+            continue  # binary
+        for n, line in enumerate(data.decode("utf-8", "replace").split("\n"), 1):
+            if OUTSIDE in line:
+                fail("outside", f"{rel}:{n}: refers to {OUTSIDE}, outside the repository")
+
+
+# --- links ----------------------------------------------------------------------------------
+
+def slug(heading):
+    """GitHub's anchor for a heading: lower case, code marks and punctuation dropped, spaces to -."""
+    s = heading.strip().lower().replace("`", "")
+    s = re.sub(r"[^\w\- ]", "", s)
+    return s.replace(" ", "-")
+
+
+def anchors(path, cache={}):
+    if path not in cache:
+        found, counts = set(), {}
+        for line in without_code(read(path), inline=False):
+            m = re.match(r"^(#{1,6})\s+(.*?)\s*#*\s*$", line)
+            if not m:
+                continue
+            base = slug(m.group(2))
+            n = counts.get(base, 0)
+            counts[base] = n + 1
+            found.add(base if n == 0 else f"{base}-{n}")
+        cache[path] = found
+    return cache[path]
+
+
+def markdown_files(root):
+    files = [os.path.join(root, "README.md"), os.path.join(root, "data", "scenes", "README.md")]
+    docs = os.path.join(root, "docs")
+    files += sorted(os.path.join(docs, f) for f in os.listdir(docs) if f.endswith(".md"))
+    return [f for f in files if os.path.exists(f)]
+
+
+def check_links(root):
+    link = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)(?:\s+\"[^\"]*\")?\)")
+    for path in markdown_files(root):
+        rel = os.path.relpath(path, root)
+        for n, line in enumerate(without_code(read(path)), 1):
+            for m in link.finditer(line):
+                target = m.group(1)
+                if re.match(r"^[a-z][a-z0-9+.-]*:", target):
+                    continue  # http:, https:, mailto:
+                file_part, _, anchor = target.partition("#")
+                dest = path if not file_part else os.path.normpath(
+                    os.path.join(os.path.dirname(path), file_part))
+                if not os.path.exists(dest):
+                    fail("links", f"{rel}:{n}: '{target}': no such file")
+                    continue
+                if anchor and dest.endswith(".md") and anchor not in anchors(dest):
+                    fail("links", f"{rel}:{n}: '{target}': no such heading in "
+                                  f"{os.path.relpath(dest, root)}")
+
+
+# --- keys -----------------------------------------------------------------------------------
+
+def documented_keys(root):
+    lines = section(read(os.path.join(root, "docs", "guide.md")), "Scene keys")
+    if lines is None:
+        fail("keys", "docs/guide.md has no '## Scene keys' section")
+        return {}
+    keys, current = {}, None
+    for line in lines:
+        m = re.match(r"^### (.*)$", line)
+        if m:
+            title = m.group(1).strip()
+            if title.startswith("top level"):
+                current = ""
+            else:
+                s = re.match(r"^\[([^\]]+)\]$", title)
+                current = s.group(1) if s else None
+            continue
+        if current is None:
+            continue
+        row = re.match(r"^\|\s*`([^`]+)`\s*\|.*\|\s*(.*?)\s*\|\s*$", line)
+        if not row:
+            continue
+        name = row.group(1) if current == "" else f"{current}.{row.group(1)}"
+        cell = row.group(2)
+        code = re.fullmatch(r"`([^`]*)`", cell)
+        if code:
+            default = code.group(1)
+        elif cell in ("(none)", "(empty)"):
+            default = ""
+        else:
+            fail("keys", f"docs/guide.md: {name}: default '{cell}' is neither `value`, (none) "
+                         "nor (empty)")
+            default = cell
+        if name in keys:
+            fail("keys", f"docs/guide.md: {name} is documented twice")
+        keys[name] = default
+    return keys
+
+
+def program_keys(fragsim):
+    try:
+        out = subprocess.run([fragsim, "compare", "--help"], check=True, capture_output=True,
+                             text=True, timeout=60).stdout
+    except (OSError, subprocess.SubprocessError) as e:
+        fail("keys", f"could not run '{fragsim} compare --help': {e}")
+        return {}
+    lines = out.split("\n")
+    start = next((i for i, l in enumerate(lines) if l.startswith("Scene keys")), None)
+    if start is None:
+        fail("keys", "`fragsim compare --help` prints no 'Scene keys' section")
+        return {}
+    entries, name, text = [], None, []
+    for line in lines[start + 1:]:
+        m = re.match(r"^  --([A-Za-z0-9_.-]+)(?: V)?(?:\s+(.*))?$", line)
+        if m:
+            if name:
+                entries.append((name, " ".join(text)))
+            name, text = m.group(1), [m.group(2) or ""]
+        elif line.startswith("   ") and name:
+            text.append(line.strip())
+        else:
+            break  # the end of boost's options block
+    if name:
+        entries.append((name, " ".join(text)))
+    keys = {}
+    for name, help_text in entries:
+        m = re.search(r"\[([^\[\]]*)\]\s*$", help_text)
+        if not m:
+            fail("keys", f"`fragsim compare --help`: --{name} shows no [default]")
+        keys[name] = m.group(1) if m else None
+    return keys
+
+
+def check_keys(root, fragsim):
+    doc = documented_keys(root)
+    prog = program_keys(fragsim)
+    if not prog:
+        return
+    for name in sorted(set(prog) - set(doc)):
+        fail("keys", f"{name} (default '{prog[name]}') is a scene key of the program but not in "
+                     "docs/guide.md's scene keys")
+    for name in sorted(set(doc) - set(prog)):
+        fail("keys", f"{name} is in docs/guide.md's scene keys but not a key of the program")
+    for name in sorted(set(doc) & set(prog)):
+        if prog[name] is not None and doc[name] != prog[name]:
+            fail("keys", f"{name}: docs/guide.md gives the default '{doc[name]}', the program "
+                         f"'{prog[name]}'")
+
+
+# --- folders and includes -------------------------------------------------------------------
+
+def table_folders(lines):
+    """Backticked src/ folders in the first cells of a table's rows, in order."""
+    out = []
+    for line in lines:
+        first = re.match(r"^\|([^|]*)\|", line)
+        if first:
+            out += re.findall(r"`(src(?:/[A-Za-z0-9_.-]+)*)`", first.group(1))
+    return out
+
+
+def check_folders(root):
+    lines = section(read(os.path.join(root, "docs", "architecture.md")), "Folders")
+    if lines is None:
+        fail("folders", "docs/architecture.md has no '## Folders' section")
+        return
+    listed = table_folders(lines)
+    if not listed:
+        fail("folders", "docs/architecture.md's '## Folders' table lists no src/ folder")
+    actual = set()
+    for d, dirs, _ in os.walk(os.path.join(root, "src")):
+        dirs[:] = [x for x in dirs if not x.startswith(".")]
+        rel = os.path.relpath(d, root).replace(os.sep, "/")
+        if rel != "src":
+            actual.add(rel)
+    for folder in listed:
+        if folder not in actual:
+            fail("folders", f"{folder} is listed in docs/architecture.md but does not exist")
+    for folder in sorted(actual - set(listed)):
+        fail("folders", f"{folder} exists but is not listed in docs/architecture.md's Folders")
+    for folder in sorted({f for f in listed if listed.count(f) > 1}):
+        fail("folders", f"{folder} is listed twice in docs/architecture.md")
+
+
+def layers(root):
+    lines = section(read(os.path.join(root, "docs", "architecture.md")), "Layers")
+    if lines is None:
+        fail("includes", "docs/architecture.md has no '## Layers' section")
+        return {}
+    out = {}
+    for line in lines:
+        m = re.match(r"^\|\s*([0-9]+)\s*\|(.*)\|\s*$", line)
+        if m:
+            for folder in re.findall(r"`(src/[A-Za-z0-9_.-]+)`", m.group(2)):
+                out[folder] = int(m.group(1))
+    return out
+
+
+def unit_of(root, path):
+    """The layer unit a path under src/ belongs to: src/<top folder>."""
+    parts = os.path.relpath(path, os.path.join(root, "src")).split(os.sep)
+    return "src/" + parts[0]
+
+
+def resolve(root, including_dir, target):
+    """The file an #include "target" names, as the build's include roots find it."""
+    for base in (including_dir, os.path.join(root, "src", "control"),
+                 os.path.join(root, "src", "control", "include"), os.path.join(root, "src"),
+                 os.path.join(root, "include")):
+        p = os.path.normpath(os.path.join(base, target))
+        if os.path.isfile(p):
+            return p
+    return None
+
+
+def check_includes(root):
+    layer = layers(root)
+    if not layer:
+        return
+    src = os.path.join(root, "src")
+    quoted = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
+    angled = re.compile(r"^\s*#\s*include\s*<([^>]+)>")
+    owners = {"ode/": "src/sim", "SDL": "src/play"}
+    reported = set()
+    for d, dirs, names in os.walk(src):
+        dirs[:] = [x for x in dirs if not x.startswith(".")]
+        for name in sorted(names):
+            if not name.endswith((".cpp", ".hpp", ".h")):
+                continue
+            path = os.path.join(d, name)
+            rel = os.path.relpath(path, root).replace(os.sep, "/")
+            unit = unit_of(root, path)
+            if unit not in layer:
+                if unit not in reported:
+                    fail("includes", f"{unit} is in no layer of docs/architecture.md's Layers")
+                    reported.add(unit)
+                continue
+            for n, line in enumerate(read(path).split("\n"), 1):
+                m = angled.match(line)
+                if m:
+                    for prefix, owner in owners.items():
+                        if m.group(1).startswith(prefix) and unit != owner:
+                            fail("includes", f"{rel}:{n}: includes <{m.group(1)}>; only {owner} "
+                                             "may")
+                    continue
+                m = quoted.match(line)
+                if not m:
+                    continue
+                target = resolve(root, d, m.group(1))
+                if target is None:
+                    fail("includes", f"{rel}:{n}: \"{m.group(1)}\" resolves to no file")
+                    continue
+                if os.path.commonpath([target, src]) != src:
+                    to = "src/control"  # the C header's place before the library had a folder
+                else:
+                    to = unit_of(root, target)
+                if to == unit:
+                    continue
+                if to not in layer:
+                    fail("includes", f"{rel}:{n}: includes {to}, which is in no layer")
+                elif layer[to] >= layer[unit]:
+                    fail("includes", f"{rel}:{n}: {unit} (layer {layer[unit]}) includes {to} "
+                                     f"(layer {layer[to]}): only lower layers may be included")
+
+
+def main(argv):
+    args = [a for a in argv[1:] if not a.startswith("--only")]
+    only = None
+    for i, a in enumerate(argv):
+        if a.startswith("--only="):
+            only = a.split("=", 1)[1].split(",")
+        elif a == "--only" and i + 1 < len(argv):
+            only = argv[i + 1].split(",")
+            args.remove(argv[i + 1])
+    if len(args) != 2:
+        print(__doc__.strip().split("\n\n")[1], file=sys.stderr)
+        return 2
+    root, fragsim = os.path.abspath(args[0]), args[1]
+    checks = {
+        "readme": lambda: check_readme(root),
+        "outside": lambda: check_outside(root),
+        "links": lambda: check_links(root),
+        "keys": lambda: check_keys(root, fragsim),
+        "folders": lambda: check_folders(root),
+        "includes": lambda: check_includes(root),
+    }
+    for name in only or checks:
+        if name not in checks:
+            print(f"check_docs.py: unknown check '{name}'", file=sys.stderr)
+            return 2
+        checks[name]()
+    for line in failures:
+        print(line)
+    if failures:
+        print(f"docs check: {len(failures)} finding(s)")
+        return 1
+    print(f"docs check: {', '.join(only or checks)}: ok")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
