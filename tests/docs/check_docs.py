@@ -8,7 +8,7 @@ Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
-  outside   a tracked file refers to the folder beside the repository (../shared);
+  outside   a tracked file refers to the shared folder beside the repository (OUTSIDE below);
   links     a relative link in README.md, docs/*.md or data/scenes/README.md points to a missing
             file or heading;
   keys      the scene keys in docs/guide.md ("## Scene keys") and `fragsim compare --help`
