@@ -1,4 +1,5 @@
-// Comparisons on the shipped scenes: reference behaviour, the CSV files, determinism.
+// Determinism: the shipped scenes' summary.csv, pinned by hash. The comparison's own behaviour is
+// tested in evaluation_test.cpp, its CSV files in tests/report/csv_export_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -9,117 +10,8 @@
 #include <vector>
 
 #include "experiments/evaluation.hpp"
-#include "metrics/trajectory_record.hpp"
 #include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
-
-namespace fragsim {
-namespace {
-
-Scene scene_named(const std::string& name) {
-  return load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/" + name + ".ini");
-}
-
-TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
-  const Scene scene = scene_named("thesis125");
-  TrajectoryRecord ref;
-  EvaluationOptions rec_opts;
-  rec_opts.record = &ref;
-  evaluate(scene, "none", rec_opts);
-  EvaluationOptions opts;
-  opts.reference = &ref;
-  const RunSummary s = evaluate(scene, "none", opts).summary;
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.deviated_share, 0.0);
-}
-
-TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
-  Scene scene = scene_named("front");
-  scene.edge.k = 0.0;
-  const auto runs = compare(scene, {"none", "edge"}, false);
-  ASSERT_EQ(runs.size(), 2u);
-  EXPECT_EQ(runs[1].summary.deviation_max_m, 0.0);
-  EXPECT_EQ(runs[1].summary.near_fragments, runs[0].summary.near_fragments);
-  EXPECT_EQ(runs[1].near_per_step, runs[0].near_per_step);
-  EXPECT_GT(runs[1].summary.candidates_initial, 0);  // it predicted, it just did not push
-}
-
-TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
-  const Scene scene = scene_named("thesis125");
-  const auto runs = compare(scene, {"none", "edge", "near-plane"});
-  const std::string dir = ::testing::TempDir() + "/fragsim_csv_roundtrip";
-  std::filesystem::remove_all(dir);
-  prepare_output_dir(dir, false);
-  write_comparison_csv(dir, scene, runs);
-  const auto back = read_summary_csv(dir + "/summary.csv");
-  ASSERT_EQ(back.size(), runs.size());
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const RunSummary& a = runs[i].summary;
-    const RunSummary& b = back[i];
-    EXPECT_EQ(b.strategy, a.strategy);
-    EXPECT_EQ(b.seed, a.seed);
-    EXPECT_EQ(b.near_fragments, a.near_fragments);
-    EXPECT_EQ(b.camera_hit_fragments, a.camera_hit_fragments);
-    EXPECT_EQ(b.deviation_mean_m, a.deviation_mean_m);  // shortest round-trip text: exact
-    EXPECT_EQ(b.occlusion_max, a.occlusion_max);
-    EXPECT_EQ(b.impulse_Ns, a.impulse_Ns);
-    EXPECT_EQ(b.min_near_m, a.min_near_m);
-    EXPECT_EQ(b.exits_top, a.exits_top);
-  }
-  // config.ini is the resolved scene and loads back to the same scene.
-  EXPECT_EQ(scene_to_ini(load_scene(dir + "/config.ini")), scene_to_ini(scene));
-  // An existing, non-empty folder is refused without force.
-  EXPECT_THROW(prepare_output_dir(dir, false), std::runtime_error);
-  EXPECT_NO_THROW(prepare_output_dir(dir, true));
-}
-
-TEST(Comparison, CsvIsByteIdenticalForTheSameSceneAndSeed) {
-  const Scene scene = scene_named("thesis125");
-  const auto a = compare(scene, {"none", "wall", "deflect-all", "near-plane", "edge"});
-  const auto b = compare(scene, {"none", "wall", "deflect-all", "near-plane", "edge"});
-  EXPECT_EQ(summary_csv(scene, a), summary_csv(scene, b));
-  EXPECT_EQ(steps_csv(scene, a), steps_csv(scene, b));
-  EXPECT_EQ(camera_csv(scene, a), camera_csv(scene, b));
-}
-
-TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
-  std::vector<Evaluation> runs(4);
-  runs[0].summary.strategy = "none";
-  runs[1].summary.strategy = "a";
-  runs[1].summary.near_fragments = 1;
-  runs[2].summary.strategy = "b";
-  runs[2].summary.deviation_mean_m = 0.5;
-  runs[3].summary.strategy = "c";
-  runs[3].summary.deviation_mean_m = 0.2;
-  const auto best = best_for_thesis_goals(runs);
-  ASSERT_TRUE(best.has_value());
-  EXPECT_EQ(*best, 3u);
-}
-
-}  // namespace
-}  // namespace fragsim
-
-namespace fragsim {
-namespace {
-
-TEST(Comparison, WorkerProcessesGiveTheSameResultsAsOneProcess) {
-  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
-  const std::vector<std::string> all{"none",       "wall", "deflect-all",
-                                     "near-plane", "edge", "edge-min"};
-  const auto one = compare(scene, all, true, nullptr, 1);
-  const auto two = compare(scene, all, true, nullptr, 2);
-  const auto six = compare(scene, all, true, nullptr, 6);
-  EXPECT_EQ(summary_csv(scene, one), summary_csv(scene, two));
-  EXPECT_EQ(steps_csv(scene, one), steps_csv(scene, two));
-  EXPECT_EQ(camera_csv(scene, one), camera_csv(scene, two));
-  EXPECT_EQ(summary_csv(scene, one), summary_csv(scene, six));
-  for (std::size_t i = 0; i < one.size(); ++i) {
-    EXPECT_EQ(one[i].physics_s_per_step.size(), two[i].physics_s_per_step.size());
-  }
-}
-
-}  // namespace
-}  // namespace fragsim
 
 namespace fragsim {
 namespace {

@@ -195,23 +195,6 @@ TEST(SweepSummary, ReadsOutcomesFromTheCsvByColumnName) {
   EXPECT_THROW(read_sweep_outcomes(csv + "1,2\n", "edge.k"), std::runtime_error);
 }
 
-TEST(SweepSummary, SummaryCellsAreSummaryCsvRows) {
-  Scene scene;
-  Evaluation e;
-  e.summary.scene = "hand";
-  e.summary.strategy = "edge";
-  e.summary.seed = 42;
-  e.summary.near_fragments = 3;
-  e.summary.deviation_mean_m = 0.1;
-  auto join = [](const Values& cells) {
-    std::string s;
-    for (const std::string& c : cells) s += (s.empty() ? "" : ",") + c;
-    return s + "\n";
-  };
-  EXPECT_EQ(join(summary_csv_columns()) + join(summary_csv_cells(scene, e.summary)),
-            summary_csv(scene, {e}));
-}
-
 // ---- The command end to end. ----
 
 using test::Result;

@@ -1,5 +1,5 @@
-// TrajectoryRecord and DeviationMetric on hand-built snapshots: no physics, every case worked out
-// by hand. Distances of shifted positions carry rounding, hence the 1e-12 m tolerance; a run
+// DeviationMetric on hand-built snapshots (support/hand_runs.hpp): no physics, every case worked
+// out by hand. Distances of shifted positions carry rounding, hence the 1e-12 m tolerance; a run
 // against itself must give exactly zero.
 
 #include <gtest/gtest.h>
@@ -10,50 +10,17 @@
 #include "metrics/deviation_metric.hpp"
 #include "metrics/run_summary.hpp"
 #include "metrics/trajectory_record.hpp"
+#include "support/hand_runs.hpp"
 
 namespace fragsim {
 namespace {
 
+using test::make_run;
+using test::play;
+using test::record;
+using test::Trajectory;
+
 constexpr double kTol_m = 1e-12;
-constexpr double kDt_s = 1.0 / 60.0;
-
-// One run: the fragments' states at step 0, 1, ..., steps.
-using Trajectory = std::vector<std::vector<FragmentState>>;
-
-// n fragments on a line, falling at different speeds, over `steps` steps.
-Trajectory make_run(int n, int steps) {
-  Trajectory run(static_cast<std::size_t>(steps + 1));
-  for (int k = 0; k <= steps; ++k) {
-    for (int i = 0; i < n; ++i) {
-      FragmentState f;
-      f.position_m = {0.3 * i, 1.6 - 0.1 * (i + 1) * k, -8.0 + 0.25 * k};
-      f.half_extents_m = {0.05, 0.05, 0.05};
-      run[static_cast<std::size_t>(k)].push_back(f);
-    }
-  }
-  return run;
-}
-
-void play(const Trajectory& run, RunObserver& observer) {
-  const RunInfo info{nullptr, "test", static_cast<int>(run.front().size()),
-                     static_cast<int>(run.size()) - 1, kDt_s};
-  StepSnapshot snap;
-  snap.fragments = run.front();
-  observer.begin(info, snap);
-  for (std::size_t k = 1; k < run.size(); ++k) {
-    snap.step = static_cast<int>(k);
-    snap.t_s = static_cast<double>(k) * kDt_s;
-    snap.fragments = run[k];
-    observer.observe(snap);
-  }
-  observer.end();
-}
-
-TrajectoryRecord record(const Trajectory& run) {
-  TrajectoryRecord ref;
-  play(run, ref);
-  return ref;
-}
 
 RunSummary deviation(const TrajectoryRecord& ref, const Trajectory& run, double threshold_m,
                      std::vector<double>* largest_m = nullptr) {
@@ -63,29 +30,6 @@ RunSummary deviation(const TrajectoryRecord& ref, const Trajectory& run, double 
   metric.fill(s);
   if (largest_m) *largest_m = metric.largest_deviation_m();
   return s;
-}
-
-TEST(DeviationTrajectoryRecord, StoresEverySnapshotIncludingStepZero) {
-  const Trajectory run = make_run(3, 4);
-  const TrajectoryRecord ref = record(run);
-  EXPECT_EQ(ref.steps(), 5);
-  EXPECT_EQ(ref.fragments(), 3);
-  for (int k = 0; k <= 4; ++k) {
-    for (int i = 0; i < 3; ++i) {
-      const auto& expected = run[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)];
-      EXPECT_EQ(ref.position(k, i), expected.position_m) << "step " << k << " fragment " << i;
-      EXPECT_EQ(ref.at_step(k)[static_cast<std::size_t>(i)], expected.position_m);
-    }
-  }
-}
-
-TEST(DeviationTrajectoryRecord, BeginStartsAFreshRecord) {
-  TrajectoryRecord ref;
-  play(make_run(3, 4), ref);
-  play(make_run(2, 1), ref);
-  EXPECT_EQ(ref.steps(), 2);
-  EXPECT_EQ(ref.fragments(), 2);
-  EXPECT_EQ(ref.position(1, 1), make_run(2, 1)[1][1].position_m);
 }
 
 TEST(DeviationMetric, RunAgainstItselfIsExactlyZero) {

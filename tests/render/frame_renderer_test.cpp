@@ -1,57 +1,31 @@
-// The software rasteriser and the frames: hand-worked boxes in front of a 90-degree, square camera
-// at the origin looking down -z (so a point at depth z and lateral offset x lands on column
-// 100 + 100 x / z of a 200-pixel image, and row 100 - 100 y / z), PNG files, the frame recorder,
-// the contact sheet, and `fragsim render` / `compare --sheet` through the executable.
+// Frames on hand-worked boxes and convex pieces in front of the square camera of
+// render_fixtures.hpp (a point at depth z and lateral offset x lands on column 100 + 100 x / z,
+// row 100 - 100 y / z): silhouettes, shading, depth order, the near plane's cut, the ground and
+// sky, the overlays, faded fragments, and the same bytes for the same snapshot.
+
+#include "render/frame_renderer.hpp"
 
 #include <gtest/gtest.h>
 
-#include "support/run_fragsim.hpp"
-
 #include <Eigen/Geometry>
-#include <array>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
-#include <memory>
-#include <sstream>
-#include <string>
 #include <vector>
 
-#include "experiments/evaluation.hpp"
-#include "render/bitmap_font.hpp"
-#include "render/contact_sheet.hpp"
-#include "render/frame_recorder.hpp"
-#include "render/frame_renderer.hpp"
 #include "render/image.hpp"
-#include "render/rasterizer.hpp"
+#include "render/render_fixtures.hpp"
 #include "support/convex_shapes.hpp"
 #include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
+using test::kSize;
+using test::render;
+using test::sky_scene;
+using test::snapshot;
 using test::square_camera;
-
-namespace fs = std::filesystem;
-
-constexpr int kSize = 200;  // pixels; 100 pixels per unit of x / z
-
-// A scene without ground, so the background is only sky.
-Scene sky_scene() {
-  Scene s;
-  s.ground.enabled = false;
-  return s;
-}
-
-FrameStyle square_style() {
-  FrameStyle style;
-  style.width_px = kSize;
-  style.height_px = kSize;
-  return style;
-}
+using test::square_style;
 
 // An axis-aligned box given by its camera-space extents (depth = -world z).
 FragmentState box(double x0, double x1, double y0, double y1, double depth0, double depth1) {
@@ -61,19 +35,6 @@ FragmentState box(double x0, double x1, double y0, double y1, double depth0, dou
   f.radius_m = f.half_extents_m.norm();
   f.mass_kg = 1.0;
   return f;
-}
-
-StepSnapshot snapshot(const CameraPose& cam, const std::vector<FragmentState>& frags) {
-  StepSnapshot s;
-  s.camera = cam;
-  s.fragments = frags;
-  return s;
-}
-
-Image render(const std::vector<FragmentState>& frags, const CameraPose& cam = square_camera(),
-             const Scene& scene = sky_scene(), const FrameStyle& style = square_style()) {
-  FrameRenderer r(scene, style);
-  return r.render(snapshot(cam, frags));
 }
 
 // Which pixels differ from the same view without fragments.
@@ -87,60 +48,6 @@ std::vector<std::vector<bool>> drawn(const Image& img, const CameraPose& cam = s
 }
 
 const Eigen::Vector3d kTowardCamera{0.0, 0.0, 1.0};  // the outward normal of a box's near face
-
-// --- The rasteriser -----------------------------------------------------------------------------
-
-TEST(Rasterizer, ClipsAPolygonAtThePlaneExactly) {
-  const std::array<Eigen::Vector3d, 3> tri{Eigen::Vector3d(0, 0, 0.05), Eigen::Vector3d(1, 0, 1.0),
-                                           Eigen::Vector3d(0, 1, 1.0)};
-  std::array<Eigen::Vector3d, 4> out;
-  const int n = clip_polygon_z(tri.data(), 3, 0.1, true, out.data());
-  ASSERT_EQ(n, 4);  // the corner in front of the plane becomes two points on it
-  int on_plane = 0;
-  for (int i = 0; i < n; ++i) {
-    EXPECT_GE(out[i].z(), 0.1);
-    on_plane += out[i].z() == 0.1;
-  }
-  EXPECT_EQ(on_plane, 2);
-  // The cut point on edge (0, 0, 0.05) -> (1, 0, 1): x = (0.1 - 0.05) / 0.95.
-  EXPECT_NEAR(out[0].x(), 0.05 / 0.95, 1e-15);
-  EXPECT_EQ(clip_polygon_z(tri.data(), 3, 2.0, true, out.data()), 0);   // all in front
-  EXPECT_EQ(clip_polygon_z(tri.data(), 3, 0.01, true, out.data()), 3);  // all behind
-}
-
-TEST(Rasterizer, TriangleCoversThePixelsWhoseCentresItContains) {
-  Image img(kSize, kSize);
-  Rasterizer r;
-  r.begin(img, square_camera());
-  const Rgb red{255, 0, 0};
-  // At depth 2, camera-space (0, 0) to (1, 0) to (0, 1) spans columns 100..150, rows 50..100.
-  r.fill_triangle({0, 0, 2}, {1, 0, 2}, {0, 1, 2}, red);
-  EXPECT_EQ(img.at(101, 98), red);
-  EXPECT_EQ(img.at(140, 98), red);
-  EXPECT_EQ(img.at(101, 52), red);
-  EXPECT_EQ(img.at(99, 98), Rgb{});    // left of x = 0
-  EXPECT_EQ(img.at(101, 101), Rgb{});  // below y = 0
-  EXPECT_EQ(img.at(140, 60), Rgb{});   // beyond the hypotenuse
-  EXPECT_FLOAT_EQ(r.inverse_depth(110, 90), 0.5f);
-  EXPECT_EQ(r.inverse_depth(10, 10), 0.0f);
-}
-
-TEST(Rasterizer, SegmentIsClippedAtTheNearPlane) {
-  Image img(kSize, kSize);
-  Rasterizer r;
-  r.begin(img, square_camera());
-  ScreenPoint a;
-  ScreenPoint b;
-  // From depth 0.05 (in front of the near plane) to depth 1 along x = 0.05: the drawn part starts
-  // on the plane, at x / z = 0.5 (column 150), and ends at x / z = 0.05 (column 105).
-  ASSERT_TRUE(r.draw_segment({0.05, 0, 0.05}, {0.05, 0, 1.0}, {255, 255, 255}, 1, &a, &b));
-  EXPECT_NEAR(a.x, 150.0, 1e-9);
-  EXPECT_NEAR(b.x, 105.0, 1e-9);
-  EXPECT_EQ(img.at(160, 100), Rgb{});  // the part in front of the plane would reach column 200
-  EXPECT_FALSE(r.draw_segment({0, 0, 0.01}, {1, 0, 0.05}, {255, 255, 255}));
-}
-
-// --- Frames -------------------------------------------------------------------------------------
 
 TEST(Frame, SquareFacingTheCameraCoversThePredictedRectangle) {
   // A 1 m square plate (1 mm thick) at depth 5, its centre at (0.3, 0.2): its near face at depth
@@ -455,270 +362,6 @@ TEST(Frame, SameSnapshotGivesTheSameBytes) {
   EXPECT_EQ(a.bytes(), FrameRenderer(scene, style).render(snapshot(cam, frags)).bytes());
 }
 
-// --- PNG and text -------------------------------------------------------------------------------
-
-TEST(Png, EncodesAndDecodesExactly) {
-  Image img(7, 3, {10, 20, 30});
-  img.set(6, 2, {255, 0, 128});
-  const std::string png = encode_png(img);
-  ASSERT_GE(png.size(), 8u);
-  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-  const Image back = decode_png(png);
-  EXPECT_EQ(back.width(), 7);
-  EXPECT_EQ(back.height(), 3);
-  EXPECT_EQ(back.bytes(), img.bytes());
-  EXPECT_THROW(decode_png("not a png"), std::runtime_error);
-  EXPECT_THROW(encode_png(Image()), std::runtime_error);
-}
-
-TEST(Png, FileIsWrittenWholeWithoutDebris) {
-  const fs::path dir = fs::path(::testing::TempDir()) / "fragsim_png";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  Image img(16, 9, {1, 2, 3});
-  write_png((dir / "a.png").string(), img);
-  EXPECT_EQ(read_png((dir / "a.png").string()).bytes(), img.bytes());
-  int files = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
-  EXPECT_EQ(files, 1);
-  EXPECT_THROW(write_png((dir / "missing" / "a.png").string(), img), std::runtime_error);
-}
-
-TEST(Font, DrawsInsideItsBoxAndMeasuresIt) {
-  EXPECT_EQ(text_width_px("t = 0.30 s", 1), 10 * kGlyphAdvancePx - 1);
-  EXPECT_EQ(text_width_px("ab", 2), 2 * (2 * kGlyphAdvancePx - 1));
-  for (const char c : std::string("0123456789abcdefghijklmnopqrstuvwxyz-.= s")) {
-    EXPECT_TRUE(has_glyph(c)) << c;
-  }
-  Image img(40, 20);
-  draw_text(img, 3, 2, "edge-min", {255, 255, 255}, 1);
-  int lit = 0;
-  for (int y = 0; y < img.height(); ++y) {
-    for (int x = 0; x < img.width(); ++x) {
-      if (img.at(x, y) == Rgb{255, 255, 255}) {
-        ++lit;
-        EXPECT_GE(x, 3);
-        EXPECT_LT(x, 3 + text_width_px("edge-min"));
-        EXPECT_GE(y, 2);
-        EXPECT_LT(y, 2 + kGlyphHeightPx);
-      }
-    }
-  }
-  EXPECT_GT(lit, 40);
-  // "g" has a descender: something is drawn below the baseline (row 7 of the glyph).
-  Image g(6, kGlyphHeightPx);
-  draw_text(g, 0, 0, "g", {255, 255, 255});
-  bool below = false;
-  for (int x = 0; x < 5; ++x) below = below || g.at(x, 8) == Rgb{255, 255, 255};
-  EXPECT_TRUE(below);
-}
-
-// --- Recorder and contact sheet -----------------------------------------------------------------
-
-TEST(FrameRecorder, KeepsTheChosenStepsOfEachRunAsTheyWere) {
-  const Scene scene = test::single_fragment({0.0, 1.6, -10.0});
-  FrameRecorder frames({10, 0, 3, 10, 1000});
-  test::Recorder all;
-  EvaluationOptions opts;
-  opts.occlusion = false;
-  opts.extra = {&frames, &all};
-  evaluate(scene, "none", opts);
-  const std::vector<RecordedFrame>* kept = frames.frames("none");
-  ASSERT_NE(kept, nullptr);
-  ASSERT_EQ(kept->size(), 3u);  // 0, 3, 10 (1000 is past the run's end)
-  for (const RecordedFrame& f : *kept) {
-    EXPECT_NEAR(f.t_s, f.step * scene.sim.dt_s, 1e-12);
-    ASSERT_EQ(f.fragments.size(), 1u);
-    EXPECT_EQ(f.fragments[0].position_m, all.steps[f.step].fragments[0].position_m);
-    EXPECT_EQ(f.view().fragments.data(), f.fragments.data());
-  }
-  EXPECT_EQ(frames.frame("none", 3)->step, 3);
-  EXPECT_EQ(frames.frame("none", 4), nullptr);
-  EXPECT_EQ(frames.frames("edge"), nullptr);
-  evaluate(scene, "edge", opts);
-  EXPECT_EQ(frames.strategies(), (std::vector<std::string>{"none", "edge"}));
-}
-
-TEST(FrameRecorder, KeepsItsOwnCopyOfAConvexPiecesShape) {
-  // A run's shapes die with its simulation, before the frames are drawn: the recorder's frame
-  // must not point at them. Two fragments share one shape; the frame shares one copy too.
-  auto shape = std::make_unique<ConvexShape>(test::regular_tetrahedron(0.5));
-  const ConvexShape* original = shape.get();
-  std::vector<FragmentState> frags{test::shaped_fragment(*shape, {0.0, 0.0, -5.0}),
-                                   test::shaped_fragment(*shape, {1.0, 0.0, -5.0})};
-  FrameRecorder frames({0});
-  RunInfo info;
-  info.strategy = "none";
-  info.fragment_count = 2;
-  frames.begin(info, snapshot(square_camera(), frags));
-  const Image before = render(frags);
-  shape.reset();
-  const RecordedFrame* kept = frames.frame("none", 0);
-  ASSERT_NE(kept, nullptr);
-  const ConvexShape* copy = kept->fragments[0].shape;
-  ASSERT_NE(copy, nullptr);
-  EXPECT_NE(copy, original);
-  EXPECT_EQ(kept->fragments[1].shape, copy);
-  EXPECT_EQ(copy->vertices_m, test::regular_tetrahedron(0.5).vertices_m);
-  FrameRenderer r(sky_scene(), square_style());
-  EXPECT_EQ(r.render(kept->view()).bytes(), before.bytes());
-}
-
-TEST(ContactSheet, DefaultStepsAndCellsAreTheFrames) {
-  EXPECT_EQ(default_sheet_steps(180), (std::vector<int>{18, 36, 45, 63}));
-  EXPECT_EQ(default_sheet_steps(2), (std::vector<int>{0, 1}));
-
-  Scene scene = test::single_fragment({0.0, 1.6, -3.0}, 2.0);
-  scene.ground.enabled = true;
-  scene.ground.height_m = 0.0;
-  FrameRecorder rec({5, 20});
-  EvaluationOptions opts;
-  opts.occlusion = false;
-  opts.extra = {&rec};
-  evaluate(scene, "none", opts);
-  evaluate(scene, "edge", opts);
-  SheetStyle style;
-  style.cell_width_px = 64;
-  style.overlays = {};
-  const std::vector<std::string> rows{"none", "edge", "wall"};  // wall did not run: empty cells
-  const Image sheet = contact_sheet(scene, rec, rows, {5, 20}, style);
-  const int cell_h = static_cast<int>(std::lround(64 / scene.camera.aspect));
-  // The layout of contact_sheet.cpp: margins of 10, gaps of 4, text twice the font's size.
-  const int x0 = 10 + text_width_px("single", 2) + 10;
-  const int y0 = 10 + 2 * kGlyphHeightPx + 10;
-  EXPECT_EQ(sheet.width(), x0 + 2 * 64 + 4 + 10);
-  EXPECT_EQ(sheet.height(), y0 + 3 * cell_h + 2 * 4 + 10);
-  // The cell of edge at step 20 is that frame, drawn at the cell's size.
-  FrameStyle fs;
-  fs.width_px = 64;
-  fs.height_px = cell_h;
-  const Image frame = FrameRenderer(scene, fs).render(rec.frame("edge", 20)->view());
-  const int cx = x0 + 64 + 4;
-  const int cy = y0 + cell_h + 4;
-  for (int y = 0; y < cell_h; ++y) {
-    for (int x = 0; x < 64; ++x) ASSERT_EQ(sheet.at(cx + x, cy + y), frame.at(x, y));
-  }
-}
-
-// --- The executable -----------------------------------------------------------------------------
-
-using test::Result;
-Result fragsim(const std::string& args) {
-  return test::run_fragsim(args);
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-const std::string kThesis125 = "--scene " + std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini";
-const std::string kSmall = kThesis125 + " --simulation.duration_s 0.5";  // 30 steps
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(d);
-  return d;
-}
-
-TEST(RenderCommand, WritesTheSameFramesTwice) {
-  const fs::path a = fresh_dir("fragsim_render_a");
-  const fs::path b = fresh_dir("fragsim_render_b");
-  // The whole run (3 s), so `edge` has candidates (46 at first) and forces to draw.
-  const std::string args = "render " + kThesis125 +
-                           " --strategy edge --steps 0:30:10 --size 160x90 "
-                           "--overlays candidates,forces,central,cuts --out ";
-  const Result ra = fragsim(args + a.string());
-  ASSERT_EQ(ra.status, 0) << ra.out;
-  ASSERT_EQ(fragsim(args + b.string()).status, 0);
-  for (const char* name :
-       {"frame_00000.png", "frame_00010.png", "frame_00020.png", "frame_00030.png"}) {
-    const std::string png = read_all(a / name);
-    ASSERT_FALSE(png.empty()) << name;
-    EXPECT_EQ(png, read_all(b / name)) << name;
-    EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-    const Image img = decode_png(png);
-    EXPECT_EQ(img.width(), 160);
-    EXPECT_EQ(img.height(), 90);
-    bool outlined = false;
-    for (int y = 0; y < img.height(); ++y) {
-      for (int x = 0; x < img.width(); ++x) outlined = outlined || img.at(x, y) == kCandidateColour;
-    }
-    // Step 0 is the explosion: no strategy step has run yet, so no candidates.
-    EXPECT_EQ(outlined, std::string(name) != "frame_00000.png") << name;
-  }
-  const Image first = read_png((a / "frame_00000.png").string());
-  EXPECT_GT(first.at(2, 2).b, first.at(2, 2).r + 40);  // sky in the corner
-  int files = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(a)) ++files;
-  EXPECT_EQ(files, 4);
-  // The frames of a rerun into the same folder need --force.
-  const Result again = fragsim(args + a.string());
-  EXPECT_EQ(again.status, 2);
-  EXPECT_EQ(lines(again.out), 1) << again.out;
-  EXPECT_NE(again.out.find("--force"), std::string::npos) << again.out;
-  EXPECT_EQ(fragsim(args + a.string() + " --force").status, 0);
-}
-
-TEST(RenderCommand, BadOptionsAreOneLineUsageErrors) {
-  const fs::path dir = fresh_dir("fragsim_render_bad");
-  const std::string out = " --out " + dir.string();
-  const std::vector<std::pair<std::string, std::string>> cases{
-      {"--size 640", "--size"},
-      {"--size 8x8", "--size"},
-      {"--size 640x360x2", "--size"},
-      {"--steps 5:2", "--steps"},
-      {"--steps 0:31", "--steps"},  // 0.5 s is 30 steps
-      {"--steps 0:10:0", "--steps"},
-      {"--steps a:b", "--steps"},
-      {"--overlays candidates,sparkles", "sparkles"},
-      {"--strategy teleport", "teleport"},
-  };
-  for (const auto& [opt, named] : cases) {
-    const Result r = fragsim("render " + kSmall + " " + opt + out);
-    EXPECT_EQ(r.status, 2) << opt << ": " << r.out;
-    EXPECT_EQ(lines(r.out), 1) << opt << ": " << r.out;
-    EXPECT_NE(r.out.find(named), std::string::npos) << opt << ": " << r.out;
-  }
-  EXPECT_EQ(fragsim("render " + kSmall).status, 2);  // no --out
-  EXPECT_FALSE(fs::exists(dir));                     // refused before anything was created
-}
-
-TEST(CompareSheet, WritesOneRowPerStrategyAndChecksItsOptions) {
-  const fs::path dir = fresh_dir("fragsim_sheet");
-  fs::create_directories(dir);
-  const fs::path sheet = dir / "sheet.png";
-  const Result r = fragsim("compare " + kSmall + " --strategies none,edge-min --sheet " +
-                           sheet.string() + " --sheet-steps 5,15,25");
-  ASSERT_EQ(r.status, 0) << r.out;
-  const Image img = read_png(sheet.string());
-  // 3 cells of 320 wide and 180 high (16:9), in the layout of contact_sheet.cpp.
-  EXPECT_EQ(img.width(), 10 + text_width_px("thesis125", 2) + 10 + 3 * 320 + 2 * 4 + 10);
-  EXPECT_EQ(img.height(), 10 + 2 * kGlyphHeightPx + 10 + 2 * 180 + 4 + 10);
-
-  const Result bad =
-      fragsim("compare " + kSmall + " --sheet " + sheet.string() + " --sheet-steps 5,99");
-  EXPECT_EQ(bad.status, 2);
-  EXPECT_EQ(lines(bad.out), 1) << bad.out;
-  EXPECT_NE(bad.out.find("--sheet-steps"), std::string::npos) << bad.out;
-  const Result no_dir = fragsim("compare " + kSmall + " --sheet " + (dir / "no/s.png").string());
-  EXPECT_EQ(no_dir.status, 2);
-  EXPECT_EQ(lines(no_dir.out), 1) << no_dir.out;
-  EXPECT_EQ(fragsim("compare " + kSmall + " --sheet-steps 1,2").status, 2);
-}
-
-}  // namespace
-}  // namespace fragsim
-
-namespace fragsim {
-namespace {
-
 // --- Faded fragments (the fade strategy's opacities) --------------------------------------------
 
 Image render_faded(const std::vector<FragmentState>& frags, const std::vector<float>& opacity) {
@@ -726,20 +369,6 @@ Image render_faded(const std::vector<FragmentState>& frags, const std::vector<fl
   StepSnapshot s = snapshot(square_camera(), frags);
   s.opacity = opacity;
   return r.render(s);
-}
-
-TEST(Rasterizer, OrderedDitherShowsTheOpacitysShareOfEachFourByFourBlock) {
-  // 16 thresholds (b + 0.5) / 16: an opacity of k / 16 shows exactly k pixels of every block.
-  for (int k = 0; k <= 16; ++k) {
-    int shown = 0;
-    for (int row = 0; row < 4; ++row) {
-      for (int col = 0; col < 4; ++col) shown += dither_shows(col + 8, row + 12, k / 16.0f);
-    }
-    EXPECT_EQ(shown, k) << k;
-  }
-  // Half: a checkerboard in each 2 x 2 (neighbours differ), so it reads as see-through.
-  EXPECT_NE(dither_shows(0, 0, 0.5f), dither_shows(1, 0, 0.5f));
-  EXPECT_NE(dither_shows(0, 0, 0.5f), dither_shows(0, 1, 0.5f));
 }
 
 TEST(Frame, FadedFragmentIsDrawnDitheredByItsOpacity) {
@@ -770,19 +399,6 @@ TEST(Frame, FadedFragmentIsDrawnDitheredByItsOpacity) {
   const Image gone = render_faded({plate, wall}, {0.0f, 1.0f});
   const FragmentState behind_eye = box(-0.5, 0.5, -0.5, 0.5, -3.0, -2.999);  // never drawn
   EXPECT_EQ(gone.bytes(), render({behind_eye, wall}).bytes());
-}
-
-TEST(FrameRecorder, KeepsTheOpacities) {
-  const Scene scene = test::single_fragment({0.0, 1.6, -5.0}, 10.0);
-  FrameRecorder frames({0, 27, 30});
-  EvaluationOptions opts;
-  opts.occlusion = false;
-  opts.extra = {&frames};
-  evaluate(scene, "fade", opts);
-  EXPECT_TRUE(frames.frame("fade", 0)->opacity.empty());  // step 0: before the strategy spoke
-  ASSERT_EQ(frames.frame("fade", 27)->opacity.size(), 1u);
-  EXPECT_NEAR(frames.frame("fade", 27)->opacity[0], 0.2 / 0.75, 1e-6);  // 0.45 m from the eye
-  EXPECT_EQ(frames.frame("fade", 30)->view().opacity[0], 0.0f);
 }
 
 }  // namespace
