@@ -116,7 +116,7 @@ StepContext Run::next_context() const {
 }
 
 void Run::step() {
-  if (done()) throw std::logic_error("Run::step: the run has taken all its steps");
+  if (done() || finished_) throw std::logic_error("Run::step: the run has ended");
   const double dt = scene_.sim.dt_s;
   const StepContext ctx = next_context();
 

@@ -30,8 +30,8 @@ struct RunTotals {
 class Run {
  public:
   // Explodes the scene, builds its world, resets the strategy and shows the observers the state
-  // at t = 0 (their begin()). The scene, the strategy, the camera and the observers must outlive
-  // the run. The camera's motion is made from camera.mode.
+  // at t = 0 (their begin()). The scene, the strategy, the camera and the observers (with the
+  // array `observers` views) must outlive the run. The camera's motion is made from camera.mode.
   Run(const Scene& scene, Strategy& strategy, std::span<RunObserver* const> observers = {});
   // The same with the camera's motion given by the caller (a camera steered live, src/play).
   // Step k asks for its pose and velocity at k dt, then, as it ends, at (k + 1) dt; nothing later.
@@ -46,7 +46,7 @@ class Run {
 
   // One step of dt: the strategy answers, the physics steps, a fragment whose state became
   // non-finite is frozen where it last was finite, the observers see the result. Throws
-  // std::logic_error when done().
+  // std::logic_error when done() or after finish().
   void step();
   // True once the scene's step count is reached.
   bool done() const { return totals_.steps >= step_count_; }
@@ -60,8 +60,9 @@ class Run {
   // The totals so far (wall time and ODE messages up to now).
   RunTotals totals() const;
 
-  // Ends the run: the observers' end(), then the totals. A run left without finish() (a flight
-  // the player ends) never calls end(). Further calls return the same totals.
+  // Ends the run, after its last step or before (a flight the player ends): the observers' end(),
+  // then the totals. A run destroyed without finish() never calls end(). Further calls return
+  // the same totals.
   RunTotals finish();
 
  private:
