@@ -4,27 +4,24 @@
 
 #include <benchmark/benchmark.h>
 
-#include "render/frame_recorder.hpp"
 #include "render/frame_renderer.hpp"
+#include "sim/run.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
-#include "sim/simulation.hpp"
 
 namespace {
 
 void BM_RenderFrame(benchmark::State& state) {
   const fragsim::Scene scene = fragsim::load_scene(FRAGSIM_DATA_DIR "/scenes/front.ini");
   const int step = static_cast<int>(state.range(0));
-  fragsim::FrameRecorder recorder({step});
   auto none = fragsim::make_strategy("none", scene);
-  fragsim::RunObserver* observers[] = {&recorder};
-  fragsim::simulate(scene, *none, observers);
-  const fragsim::RecordedFrame& frame = *recorder.frame("none", step);
+  fragsim::Run run(scene, *none);
+  while (run.state().step < step) run.step();
   fragsim::FrameStyle style;
   style.overlays.cuts = true;
   fragsim::FrameRenderer renderer(scene, style);
   for (auto _ : state) {
-    const fragsim::Image image = renderer.render(frame.view());
+    const fragsim::Image image = renderer.render(run.state());
     benchmark::DoNotOptimize(image.bytes().data());
   }
 }

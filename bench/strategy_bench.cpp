@@ -9,12 +9,11 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "sim/explosion.hpp"
+#include "sim/run.hpp"
 #include "sim/scene_file.hpp"
-#include "sim/simulation.hpp"
 #include "strategies/collision_prediction.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
@@ -127,59 +126,28 @@ PREDICT_BENCH(SceneKind::kAimed, aimed_front);
 PREDICT_BENCH(SceneKind::kUndirected, undirected_front);
 PREDICT_BENCH(SceneKind::kThesis1000, thesis1000);
 
-// A strategy run up to step `at`, kept as it was just before that step together with the
-// context it is about to see: each benchmark iteration steps a fresh copy of it.
-template <class S>
-class StepCapture final : public fragsim::Strategy {
- public:
-  StepCapture(S inner, int at) : inner_(std::move(inner)), at_(at) {}
-  std::string name() const override { return inner_.name(); }
-  fragsim::WorldNeeds needs() const override { return inner_.needs(); }
-  void reset(int fragment_count) override { inner_.reset(fragment_count); }
-  void step(const fragsim::StepContext& run_ctx, fragsim::StepOutput& out) override {
-    // The run stops after step `at`; the strategies' look-ahead does not depend on the scene's
-    // length, so the context is the full run's.
-    fragsim::StepContext ctx = run_ctx;
-    if (ctx.step == at_) {
-      saved_ = std::make_unique<S>(inner_);
-      ctx_ = ctx;
-      states_.assign(ctx.fragments.begin(), ctx.fragments.end());
-      ctx_.fragments = states_;
-    }
-    inner_.step(ctx, out);
-  }
-
-  const S& saved() const { return *saved_; }
-  const fragsim::StepContext& context() const { return ctx_; }
-
- private:
-  S inner_;
-  int at_;
-  std::unique_ptr<S> saved_;
-  fragsim::StepContext ctx_;
-  std::vector<FragmentState> states_;
-};
-
-// Stops the run right after step `step`: only the steps up to it are simulated.
-Scene up_to(Scene scene, int step) {
-  scene.sim.duration_s = (step + 1) * scene.sim.dt_s;
-  return scene;
-}
-
+// One step of a strategy as a run takes it at step `at`: the run is stepped up to it, then each
+// benchmark iteration steps a fresh copy of the strategy as it was then on the context the run
+// gives that step.
 template <class S>
 void BM_StrategyStep(benchmark::State& state, S strategy) {
   const int splits = static_cast<int>(state.range(0));
   const int at = static_cast<int>(state.range(1));
-  const Scene full = scene_of(SceneKind::kAimed, splits);
-  StepCapture<S> capture(std::move(strategy), at);
-  const auto totals = fragsim::simulate(up_to(full, at), capture);
-  const fragsim::StepContext& ctx = capture.context();
+  fragsim::Run run(scene_of(SceneKind::kAimed, splits), strategy);
+  while (run.state().step < at) run.step();
+  const S saved = strategy;
+  std::vector<FragmentState> states(run.state().fragments.begin(), run.state().fragments.end());
+  fragsim::StepContext ctx = run.next_context();
+  ctx.fragments = states;
+  // Step `at` too, so the physics time below covers steps 0 to `at`.
+  run.step();
+  const fragsim::RunTotals totals = run.totals();
   fragsim::StepOutput out;
   std::size_t candidates = 0;
   for (auto _ : state) {
     // A fresh copy of the strategy as it was before the step (edge's candidates), not timed.
     state.PauseTiming();
-    S s = capture.saved();
+    S s = saved;
     out.clear();
     state.ResumeTiming();
     s.step(ctx, out);
@@ -189,7 +157,7 @@ void BM_StrategyStep(benchmark::State& state, S strategy) {
   state.counters["fragments"] = static_cast<double>(ctx.fragments.size());
   state.counters["candidates"] = static_cast<double>(candidates);
   state.counters["forces"] = static_cast<double>(out.forces.size());
-  // The physics of the captured run's steps, for a ratio measured in the same process.
+  // The physics of the run's steps, for a ratio measured in the same process.
   state.counters["physics_ms_per_step"] = 1e3 * totals.physics_s / totals.steps;
 }
 
@@ -208,7 +176,7 @@ BENCHMARK_CAPTURE(BM_StrategyStep, edge_min,
 
 }  // namespace
 
-// A strategy's steps over a whole run, replayed: the run is simulated once with the strategy,
+// A strategy's steps over a whole run, replayed: the run is stepped once with the strategy,
 // every step's context kept, then each iteration steps a fresh strategy through all of them. The
 // statistic of issue 17 is this time over the run's physics time (the counter physics_ms, the
 // same process): the strategy's share of the physics step over the run. The forces' checksum
@@ -220,42 +188,25 @@ double thread_cpu_ms() {
 }
 
 template <class S>
-class RunCapture final : public fragsim::Strategy {
- public:
-  explicit RunCapture(S inner) : inner_(std::move(inner)) {}
-  std::string name() const override { return inner_.name(); }
-  fragsim::WorldNeeds needs() const override { return inner_.needs(); }
-  void reset(int fragment_count) override { inner_.reset(fragment_count); }
-  void step(const fragsim::StepContext& ctx, fragsim::StepOutput& out) override {
-    contexts_.push_back(ctx);
-    states_.emplace_back(ctx.fragments.begin(), ctx.fragments.end());
-    inner_.step(ctx, out);
-  }
-  // The kept contexts, pointing at the kept states.
-  std::vector<fragsim::StepContext> contexts() const {
-    std::vector<fragsim::StepContext> out = contexts_;
-    for (std::size_t k = 0; k < out.size(); ++k) out[k].fragments = states_[k];
-    return out;
-  }
-
- private:
-  S inner_;
-  std::vector<fragsim::StepContext> contexts_;
-  std::vector<std::vector<FragmentState>> states_;
-};
-
-template <class S>
 void BM_StrategyRun(benchmark::State& state, S strategy) {
   const Scene scene = scene_of(SceneKind::kAimed, static_cast<int>(state.range(0)));
   const S fresh = strategy;
-  RunCapture<S> capture(std::move(strategy));
+  // Every step's context as the run gives it, pointing at a copy of that step's states.
+  std::vector<fragsim::StepContext> contexts;
+  std::vector<std::vector<FragmentState>> states;
   const double run_start_ms = thread_cpu_ms();
-  const auto totals = fragsim::simulate(scene, capture);
-  // The captured run's thread CPU time: physics, the strategy once and the copies kept; the
-  // physics' share of it is run_cpu_ms less this benchmark's time (a shared machine inflates the
-  // run's wall-clock physics_ms, not its CPU time).
+  fragsim::Run run(scene, strategy);
+  while (!run.done()) {
+    contexts.push_back(run.next_context());
+    states.emplace_back(run.state().fragments.begin(), run.state().fragments.end());
+    run.step();
+  }
+  const fragsim::RunTotals totals = run.finish();
+  // The run's thread CPU time: physics, the strategy once and the copies kept; the physics' share
+  // of it is run_cpu_ms less this benchmark's time (a shared machine inflates the run's
+  // wall-clock physics_ms, not its CPU time).
   const double run_cpu_ms = thread_cpu_ms() - run_start_ms;
-  const std::vector<fragsim::StepContext> contexts = capture.contexts();
+  for (std::size_t k = 0; k < contexts.size(); ++k) contexts[k].fragments = states[k];
   const int n = static_cast<int>(contexts.front().fragments.size());
   fragsim::StepOutput out;
   // FNV-1a over the forces' bytes: 32 bits, exact in a double counter.

@@ -11,8 +11,8 @@
 #include "play/steered_camera.hpp"
 #include "sim/camera_motion.hpp"
 #include "sim/explosion.hpp"
+#include "sim/run.hpp"
 #include "sim/scene_strategies.hpp"
-#include "sim/simulation.hpp"
 
 namespace fragsim {
 namespace {
@@ -29,11 +29,10 @@ constexpr double kFrameS = 1.0 / 60.0;
 // The time rate the HUD shows is measured over this much wall time.
 constexpr double kRateWindowS = 1.0;
 
-// How a flight ends, short of its hour: simulate() has no way to stop a run early, so a flight
-// is left by unwinding out of it from the observer (nothing of the run outlives it).
-struct FlightEnd {
-  enum class Why { kQuit, kRestart, kStrategy } why = Why::kRestart;
-  std::size_t strategy = 0;
+// What the player's input asks of a flight: go on, or end it and then quit or fly `strategy`.
+struct Ask {
+  enum class Kind { kFlyOn, kQuit, kFly } kind = Kind::kFlyOn;
+  std::size_t strategy = 0;  // kFly: the next flight's
 };
 
 Scene scene_as_flown(const Scene& scene) {
@@ -64,38 +63,54 @@ std::string numbered_png(const std::string& folder) {
 
 }  // namespace
 
-class PlaySession::FlightObserver final : public RunObserver {
+class PlaySession::Flight {
  public:
-  FlightObserver(PlaySession& session, const NearPlaneMetric& near, std::string strategy,
-                 FrameRenderer& with_overlays, FrameRenderer& without)
+  Flight(PlaySession& session, const NearPlaneMetric& near, std::string strategy,
+         FrameRenderer& with_overlays, FrameRenderer& without)
       : s_(session),
         near_(near),
         with_(with_overlays),
         without_(without),
         strategy_(std::move(strategy)) {}
 
-  void begin(const RunInfo&, const StepSnapshot& initial) override {
+  // The flight's loop, once per state (the explosion's, then each step's): read the input, draw,
+  // step. It ends when the player ends the flight, when the session's max_steps are flown, or
+  // when the run's hour is up (then the same strategy flies again).
+  Ask fly(Run& run, SteeredCamera& camera) {
+    const double dt = s_.flight_scene_.sim.dt_s;
     hud_.strategy = strategy_;
     last_end_ = Clock::now();
     wall_base_ = last_end_;
     t_base_ = 0.0;
     rate_.clear();
-    frame(initial, true);
-  }
+    for (bool first = true;; first = false) {
+      const StepSnapshot& snap = run.state();
+      update_hud(snap);
+      Ask ask;
+      const bool redraw = poll(ask);
+      if (ask.kind != Ask::Kind::kFlyOn) return ask;
+      const bool due = first || snap.t_s - last_drawn_t_s_ >= kFrameS - 1e-9;
+      if (due || redraw) draw(snap, due);
+      if (s_.options_.max_steps > 0 && s_.session_steps_ >= s_.options_.max_steps) {
+        return {Ask::Kind::kQuit, 0};
+      }
+      if (due) pace(snap.t_s);
+      ask = wait_while_paused(snap);
+      if (ask.kind != Ask::Kind::kFlyOn) return ask;
+      if (run.done()) return {Ask::Kind::kFly, s_.current_};
 
-  void observe(const StepSnapshot& snap) override {
-    ++steps_;
-    ++s_.session_steps_;
-    physics_ms_ += 1e3 * snap.physics_s;
-    strategy_ms_ += 1e3 * snap.strategy_s;
-    frame(snap, false);
+      // Step k ends by asking for the velocity over step k + 1, so the camera is steered one step
+      // ahead: what is held now moves it during step k + 1 (the sample at (k + 2) dt).
+      camera.steer(s_.controls_.step(s_.held_, camera.next_t_s(), dt));
+      run.step();
+      ++s_.session_steps_;
+      physics_ms_ += 1e3 * run.state().physics_s;
+      strategy_ms_ += 1e3 * run.state().strategy_s;
+    }
   }
-
-  int steps() const { return steps_; }
-  const HudState& hud() const { return hud_; }
 
  private:
-  void frame(const StepSnapshot& snap, bool first) {
+  void update_hud(const StepSnapshot& snap) {
     RunSummary counts;
     near_.fill(counts);
     hud_.t_s = snap.t_s;
@@ -104,16 +119,15 @@ class PlaySession::FlightObserver final : public RunObserver {
     hud_.candidates = static_cast<int>(snap.candidates.size());
     hud_.strategy_ms = 1e3 * snap.strategy_s;
     hud_.message = s_.message_;
+  }
 
-    bool redraw = handle_events();
-    const bool due = first || snap.t_s - last_drawn_t_s_ >= kFrameS - 1e-9;
-    if (due || redraw) draw(snap, due);
-    const bool last = s_.options_.max_steps > 0 && s_.session_steps_ >= s_.options_.max_steps;
-    if (last) throw FlightEnd{FlightEnd::Why::kQuit, 0};
-    if (due) pace(snap.t_s);
+  // While paused, reads the input until the player goes on (or ends the flight).
+  Ask wait_while_paused(const StepSnapshot& snap) {
+    Ask ask;
     while (hud_.paused) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      redraw = handle_events();
+      const bool redraw = poll(ask);
+      if (ask.kind != Ask::Kind::kFlyOn) return ask;
       // The camera stands still while paused: a mouse moved meanwhile turns nothing.
       s_.held_.mouse_yaw_rad = 0.0;
       s_.held_.mouse_pitch_rad = 0.0;
@@ -125,24 +139,30 @@ class PlaySession::FlightObserver final : public RunObserver {
         rate_.clear();
       }
     }
+    return ask;
   }
 
-  // The front end's events since the last frame; true if the picture must be drawn again.
-  bool handle_events() {
+  // Polls the front end once; sets `ask` when a command ends the flight (the events after it are
+  // not looked at). True if the picture must be drawn again.
+  bool poll(Ask& ask) {
     events_.clear();
     s_.frontend_.poll(s_.session_steps_, events_, s_.held_);
     bool redraw = false;
     for (const PlayEvent& e : events_) {
       switch (e.command) {
         case PlayCommand::kQuit:
-          throw FlightEnd{FlightEnd::Why::kQuit, 0};
+          ask = {Ask::Kind::kQuit, 0};
+          return redraw;
         case PlayCommand::kRestart:
-          throw FlightEnd{FlightEnd::Why::kRestart, 0};
+          ask = {Ask::Kind::kFly, s_.current_};
+          return redraw;
         case PlayCommand::kNextStrategy:
-          throw FlightEnd{FlightEnd::Why::kStrategy, (s_.current_ + 1) % s_.strategies_.size()};
+          ask = {Ask::Kind::kFly, (s_.current_ + 1) % s_.strategies_.size()};
+          return redraw;
         case PlayCommand::kChooseStrategy:
           if (e.strategy >= 0 && static_cast<std::size_t>(e.strategy) < s_.strategies_.size()) {
-            throw FlightEnd{FlightEnd::Why::kStrategy, static_cast<std::size_t>(e.strategy)};
+            ask = {Ask::Kind::kFly, static_cast<std::size_t>(e.strategy)};
+            return redraw;
           }
           break;
         case PlayCommand::kPause:
@@ -218,9 +238,8 @@ class PlaySession::FlightObserver final : public RunObserver {
   std::string strategy_;
   HudState hud_;
   std::vector<PlayEvent> events_;
-  int steps_ = 0;
   bool screenshot_ = false;
-  double physics_ms_ = 0.0;
+  double physics_ms_ = 0.0;  // the steps' since the last timed frame
   double strategy_ms_ = 0.0;
   double last_drawn_t_s_ = 0.0;
   Clock::time_point last_end_;
@@ -252,25 +271,27 @@ void PlaySession::run() {
   for (;;) {
     const std::string name = strategies_[current_];
     const std::unique_ptr<Strategy> strategy = make_strategy(name, flight_scene_);
-    SteeredCamera camera(flight_scene_.camera, dt, controls_.sample(0.0),
-                         [&](int, double t_s) { return controls_.step(held_, t_s, dt); });
+    // The camera goes on from where the last flight left it. The run, as it is built, asks for
+    // the velocity over its first step: the sample at dt, under what is held now.
+    SteeredCamera camera(flight_scene_.camera, dt, controls_.sample(0.0));
+    camera.steer(controls_.step(held_, camera.next_t_s(), dt));
     NearPlaneMetric near;
-    FlightObserver flight(*this, near, name, with_overlays, without);
-    RunObserver* const observers[] = {&near, &flight};
-    FlightEnd end;
-    try {
-      simulate(flight_scene_, *strategy, camera, observers);
-    } catch (const FlightEnd& e) {
-      end = e;
-    }
+    RunObserver* const observers[] = {&near};
+    Run run(flight_scene_, *strategy, camera, observers);
+    Flight flight(*this, near, name, with_overlays, without);
+    const Ask end = flight.fly(run, camera);
+    run.finish();
 
+    const StepSnapshot& last = run.state();
+    RunSummary counts;
+    near.fill(counts);
     FlightReport report;
     report.flight = ++flights_;
     report.strategy = name;
-    report.steps = flight.steps();
-    report.t_s = flight.hud().t_s;
-    report.near_fragments = flight.hud().near_fragments;
-    report.camera_hits = flight.hud().camera_hits;
+    report.steps = last.step;
+    report.t_s = last.t_s;
+    report.near_fragments = counts.near_fragments;
+    report.camera_hits = counts.camera_hit_fragments;
     if (options_.record_flights && report.steps > 0) {
       report.recorded = record_paths(options_.record, ++recorded_, options_.record_folder);
       write_flight(*report.recorded, flight_scene_, name, camera.samples(), report.steps);
@@ -278,8 +299,8 @@ void PlaySession::run() {
                  report.recorded->scene_ini;
     }
     if (on_flight) on_flight(report);
-    if (end.why == FlightEnd::Why::kQuit) return;
-    if (end.why == FlightEnd::Why::kStrategy) current_ = end.strategy;
+    if (end.kind == Ask::Kind::kQuit) return;
+    current_ = end.strategy;
   }
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// A live session of `fragsim play`: flights one after another, each the scene's explosion
-// simulated step by step with the camera steered from the front end (steered_camera.hpp), drawn
-// with the software renderer and the HUD. Space restarts the flight (the same seed, the blast
-// aimed at where the camera is then), Tab or a number switches the strategy and restarts, P
-// pauses, O toggles the overlays, Esc quits. Every step is simulated at the scene's dt: when the
-// machine cannot keep up simulated time slows (the HUD says so) and no step is dropped, so the
-// recorded flight (flight_record.hpp) replays exactly.
+// A live session of `fragsim play`: flights one after another, each a Run (sim/run.hpp) of the
+// scene's explosion stepped by a plain loop that reads the front end's input, steers the camera
+// (steered_camera.hpp), steps the run and draws it with the software renderer and the HUD. Space
+// restarts the flight (the same seed, the blast aimed at where the camera is then), Tab or a
+// number switches the strategy and restarts, P pauses, O toggles the overlays, Esc quits. Every
+// step is simulated at the scene's dt: when the machine cannot keep up simulated time slows (the
+// HUD says so) and no step is dropped, so the recorded flight (flight_record.hpp) replays exactly.
 
 #include <functional>
 #include <optional>
@@ -69,8 +69,8 @@ class PlaySession {
   const std::vector<std::string>& strategies() const { return strategies_; }
 
  private:
-  class FlightObserver;
-  friend class FlightObserver;
+  // One flight's loop and what it shows: read the input, step the run, draw.
+  class Flight;
 
   Scene flight_scene_;  // the scene as flown: object placed, aim present, up to an hour
   PlayOptions options_;

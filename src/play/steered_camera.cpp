@@ -1,6 +1,6 @@
 #include "play/steered_camera.hpp"
 
-#include <cmath>
+#include <cassert>
 
 namespace fragsim {
 namespace {
@@ -12,33 +12,31 @@ CameraSample at_zero(CameraSample s) {
 
 }  // namespace
 
-SteeredCamera::SteeredCamera(const CameraDef& def, double dt_s, CameraSample first, NextSample next)
-    : dt_s_(dt_s), next_(std::move(next)), track_(def, {at_zero(first)}) {}
+SteeredCamera::SteeredCamera(const CameraDef& def, double dt_s, CameraSample first)
+    : dt_s_(dt_s), track_(def, {at_zero(first)}) {}
 
-void SteeredCamera::extend_past(double t_s) const {
-  // The simulation asks at k dt exactly; the rounding guard keeps a time a hair past k dt at k.
-  const long step = static_cast<long>(std::ceil(t_s / dt_s_ - 1e-6));
-  while (static_cast<long>(track_.samples().size()) <= step + 1) {
-    const int k = static_cast<int>(track_.samples().size());
-    // The same product the simulation forms (k * dt), so the file's times are the run's.
-    CameraSample s = next_(k, k * dt_s_);
-    s.t_s = k * dt_s_;
-    track_.append(s);
-  }
+double SteeredCamera::next_t_s() const {
+  // The same product the run forms (k * dt), so the file's times are the run's.
+  return static_cast<int>(track_.samples().size()) * dt_s_;
+}
+
+void SteeredCamera::steer(CameraSample s) {
+  s.t_s = next_t_s();
+  track_.append(s);
 }
 
 Eigen::Vector3d SteeredCamera::eye_at(double t_s) const {
-  extend_past(t_s);
   return track_.eye_at(t_s);
 }
 
 Eigen::Vector3d SteeredCamera::velocity_at(double t_s) const {
-  extend_past(t_s);
+  // The velocity over the step from t_s needs the sample at its end: a track past its last
+  // sample would stand still, which the player did not ask for.
+  assert(t_s < track_.samples().back().t_s);
   return track_.velocity_at(t_s);
 }
 
 CameraPose SteeredCamera::pose_at(double t_s) const {
-  extend_past(t_s);
   return track_.pose_at(t_s);
 }
 

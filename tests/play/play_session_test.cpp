@@ -68,25 +68,27 @@ TEST(FlightControls, KeysTurnAtTheTurnRate) {
   EXPECT_NEAR(s.forward.y(), std::sin(0.5), 1e-12);
 }
 
-// The simulation asks a camera for step k's pose and velocity, then for k + 1's; the steered
-// camera's samples replayed as a track must answer the same, bit for bit.
+// A run asks a camera for step k's pose and velocity, then for k + 1's; the steered camera's
+// samples replayed as a track must answer the same, bit for bit.
 TEST(SteeredCamera, ReplaysBitForBitAsATrack) {
   CameraDef def;
   FlightControls c(def, start_pose());
   HeldControls held;
-  int made = 0;
-  SteeredCamera live(def, kDt, c.sample(0.0), [&](int k, double t_s) {
-    ++made;
+  SteeredCamera live(def, kDt, c.sample(0.0));
+  const auto steer = [&] {
+    const auto k = static_cast<int>(live.samples().size());
     held.forward = k < 40 ? 1.0 : -0.5;
     held.yaw = k > 20 ? 0.7 : 0.0;
-    return c.step(held, t_s, kDt);
-  });
+    live.steer(c.step(held, live.next_t_s(), kDt));
+  };
   std::vector<CameraPose> poses;
   std::vector<Eigen::Vector3d> velocities;
   for (int k = 0; k <= 80; ++k) {
+    steer();  // the sample at (k + 1) dt: the velocity over step k needs it
+    ASSERT_EQ(live.samples().size(), static_cast<std::size_t>(k + 2));
+    EXPECT_EQ(live.samples()[k + 1].t_s, (k + 1) * kDt) << k;
     poses.push_back(live.pose_at(k * kDt));
     velocities.push_back(live.velocity_at(k * kDt));
-    EXPECT_EQ(made, k + 1) << "asked past the step after " << k;
   }
   const std::string csv = track_csv(def, "none", live.samples());
   const SampledCamera replay(def, parse_camera_track(csv, "flight.csv", "", def.max_speed_mps));
@@ -183,6 +185,52 @@ TEST(PlaySession, EveryFlightReplaysToTheHudsCounts) {
   // The second flight's blast is aimed at where the camera was when it went off, not at t = 0's.
   const Scene second = load_scene(flights[1].recorded->scene_ini);
   EXPECT_LT(second.camera.track_samples.front().eye_m.z(), -1.0);
+}
+
+// Holds forward from the input read after `from` steps on; quits at the read after 20.
+class HoldForwardFrom final : public PlayFrontend {
+ public:
+  explicit HoldForwardFrom(long from) : from_(from) {}
+  void poll(long step, std::vector<PlayEvent>& events, HeldControls& held) override {
+    held.forward = step >= from_ ? 1.0 : 0.0;
+    if (step >= 20) events.push_back({PlayCommand::kQuit, 0});
+  }
+  void present(const Image&) override {}
+  bool paced() const override { return false; }
+
+ private:
+  long from_;
+};
+
+// The loop steers one step ahead: step k ends by asking for the camera's velocity over step
+// k + 1, so what is held when the input is read after k steps first moves the camera in step
+// k + 1, the sample at (k + 2) dt.
+TEST(PlaySession, KeysReadAfterStepKMoveTheCameraFromStepKPlusOne) {
+  test::UniqueDir dir("fragsim_play_ahead");
+  const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
+  HoldForwardFrom player(10);
+  PlayOptions options;
+  options.strategy = "none";
+  options.record_folder = dir.str();
+  options.style.width_px = 32;
+  options.style.height_px = 18;
+  PlaySession session(scene, options, player);
+  std::vector<FlightReport> flights;
+  session.on_flight = [&](const FlightReport& f) { flights.push_back(f); };
+  session.run();
+
+  ASSERT_EQ(flights.size(), 1u);
+  EXPECT_EQ(flights[0].steps, 20);
+  ASSERT_TRUE(flights[0].recorded);
+  const std::vector<CameraSample> track =
+      load_camera_track(flights[0].recorded->track_csv, "", scene.camera.max_speed_mps);
+  // t = 0 to 21 dt: the last step asked for the velocity at its end.
+  ASSERT_EQ(track.size(), 22u);
+  for (std::size_t k = 0; k <= 11; ++k) EXPECT_EQ(track[k].eye_m, track[0].eye_m) << k;
+  EXPECT_GT((track[12].eye_m - track[11].eye_m).norm(), 0.0);
+  for (std::size_t k = 12; k < track.size(); ++k) {
+    EXPECT_GT((track[k].eye_m - track[k - 1].eye_m).norm(), 0.0) << k;
+  }
 }
 
 }  // namespace
