@@ -1,4 +1,4 @@
-// The C API of include/fragsim/control.h over the tool's own strategy classes: the same compiled
+// The C API of fragsim/control.h over the strategy classes of strategies/: the same compiled
 // code fragsim runs, fed a StepContext built from the caller's plain structs. Everything here is
 // per controller (no globals); no exception leaves an API function.
 
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "control/id_table.hpp"
+#include "api/id_table.hpp"
 #include "fragsim/control.h"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
