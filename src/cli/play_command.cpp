@@ -12,9 +12,9 @@
 #include "io/number_format.hpp"
 #include "play/play_session.hpp"
 #include "play/scripted_route.hpp"
-#include "play/sdl_window.hpp"
 #include "sim/scene_strategies.hpp"
 #include "strategies/registry.hpp"
+#include "window/sdl_window.hpp"
 
 namespace fragsim::cli {
 namespace {

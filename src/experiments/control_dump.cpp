@@ -1,8 +1,10 @@
 #include "experiments/control_dump.hpp"
 
-#include <array>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
+
+#include "api/def_mapping.hpp"
 
 namespace fragsim {
 
@@ -14,41 +16,26 @@ void ControlDump::put(const T& v) {
 }
 
 bool ControlDump::supports(std::string_view strategy) {
-  return strategy == "edge-min" || strategy == "edge" || strategy == "deflect-all";
+  return control::strategy_named(strategy).has_value();
 }
 
 ControlDump::ControlDump(const std::string& path, std::string_view strategy, const Scene& scene)
     : file_(path) {
-  if (!supports(strategy)) {
+  const std::optional<fragsim_strategy> id = control::strategy_named(strategy);
+  if (!id) {
     throw std::invalid_argument("'" + std::string(strategy) +
                                 "' is not in the controller library (edge-min, edge, deflect-all)");
   }
-  std::array<double, 8> param{};
-  std::array<std::int32_t, 8> iparam{};
-  std::uint32_t id = 0;
-  if (strategy == "edge-min") {
-    const EdgeMinParams& p = scene.edge_min;
-    param = {p.margin_m, p.a_max_mps2, p.camera_accel_mps2, p.camera_turn_degps, p.horizon_cap_s};
-    iparam[0] = static_cast<std::int32_t>(p.camera_model);
-    iparam[1] = p.max_solves;
-  } else if (strategy == "edge") {
-    id = 1;
-    const EdgeParams& p = scene.edge;
-    param = {p.k, p.a_max_mps2, p.horizon_cap_s};
-    iparam = {static_cast<std::int32_t>(p.predictor), static_cast<std::int32_t>(p.reach),
-              static_cast<std::int32_t>(p.horizon), static_cast<std::int32_t>(p.replan)};
-  } else {
-    id = 2;
-    param = {scene.deflect_all.accel_mps2, scene.deflect_all.range_m};
-  }
-  bytes_.append("FSCDUMP1", 8);
+  const fragsim_controller_def def =
+      control::controller_def(*id, scene.edge_min, scene.edge, scene.deflect_all);
+  bytes_.append("FSCDUMP2", 8);
   put(std::uint32_t{0x01020304});
-  put(id);
+  put(static_cast<std::uint32_t>(sizeof def));
   step_count_at_ = bytes_.size();
   put(std::uint32_t{0});
   put(std::uint32_t{0});
-  for (double v : param) put(v);
-  for (std::int32_t v : iparam) put(v);
+  put(def);
+  bytes_.append((8 - sizeof def % 8) % 8, '\0');
 }
 
 void ControlDump::record(const StepContext& ctx, const StepOutput& out) {

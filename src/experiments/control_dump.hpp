@@ -5,9 +5,11 @@
 // at all (AtomicFile). Doubles are stored as their bytes, so a replay sees the same bits.
 //
 // The format, native byte order (written and read on one machine), no padding between fields:
-//   header  char magic[8] = "FSCDUMP1"; uint32 byte_order = 0x01020304; uint32 strategy
-//           (0 edge-min, 1 edge, 2 deflect-all); uint32 step_count; uint32 reserved = 0;
-//           double param[8]; int32 iparam[8]   (what each holds: ControlDump::params)
+//   header  char magic[8] = "FSCDUMP2"; uint32 byte_order = 0x01020304; uint32 def_size;
+//           uint32 step_count; uint32 reserved = 0;
+//           the fragsim_controller_def that stands for the scene's strategy and parameters
+//           (api/def_mapping.hpp, the library's own mapping), its def_size bytes as they are,
+//           then zero bytes up to a multiple of 8
 //   step    int32 step; int32 fragment_count; int32 force_count; int32 reserved = 0;
 //           double context[32] = t, dt, end_time (+inf in the tool), eye[3], right[3], up[3],
 //           forward[3], fovy_deg,

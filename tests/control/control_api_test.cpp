@@ -1,4 +1,4 @@
-// The controller library's C API (include/fragsim/control.h): defaults, refusals with a status and
+// The controller library's C API (fragsim/control.h): defaults, refusals with a status and
 // a message, forces equal to the tool's strategies', state kept by fragment id.
 
 #include <gtest/gtest.h>

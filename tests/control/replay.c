@@ -1,7 +1,9 @@
 /* The controller library's differential test: replays a dump that `fragsim run --dump-control`
  * wrote (format: src/experiments/control_dump.hpp) through the library's C API, and checks that the
  * forces are bit for bit the ones fragsim applied. Plain C99: it sees the library only as a game
- * would, through include/fragsim/control.h.
+ * would, through fragsim/control.h. The dump carries the def the library's own mapping made of the
+ * scene's settings (src/control/api/def_mapping.hpp), passed on as it is: nothing here maps a
+ * setting to a field.
  *
  *   replay DUMP [--arrays]     --arrays: through fragsim_controller_step_arrays instead
  *
@@ -77,10 +79,8 @@ int main(int argc, char** argv) {
   unsigned char* data;
   Reader r;
   char magic[8];
-  uint32_t strategy, step_count;
-  double param[8];
-  int32_t iparam[8];
-  int k, use_arrays;
+  uint32_t def_size, step_count;
+  int use_arrays;
   fragsim_controller_def def;
   fragsim_controller* ctl = NULL;
   char message[256];
@@ -105,45 +105,28 @@ int main(int argc, char** argv) {
   r.end = data + size;
   r.bad = 0;
   take(&r, magic, 8);
-  if (memcmp(magic, "FSCDUMP1", 8) != 0 || take_u32(&r) != 0x01020304u) {
+  if (memcmp(magic, "FSCDUMP2", 8) != 0 || take_u32(&r) != 0x01020304u) {
     fprintf(stderr, "replay: %s is not a control dump of this byte order\n", argv[1]);
     return 2;
   }
-  strategy = take_u32(&r);
+  def_size = take_u32(&r);
   step_count = take_u32(&r);
   (void)take_u32(&r);
-  for (k = 0; k < 8; ++k) param[k] = take_double(&r);
-  for (k = 0; k < 8; ++k) iparam[k] = take_i32(&r);
-
-  /* The tool's settings, field by field, into a def from the defaults function. */
-  def = fragsim_default_controller_def();
-  if (strategy == 0) {
-    def.strategy = FRAGSIM_STRATEGY_EDGE_MIN;
-    def.edge_min.margin_m = param[0];
-    def.edge_min.a_max_mps2 = param[1];
-    def.edge_min.camera_accel_mps2 = param[2];
-    def.edge_min.camera_turn_degps = param[3];
-    def.edge_min.camera_model = (fragsim_camera_model)iparam[0];
-    def.horizon_cap_s = param[4];
-    def.edge_min.max_solves = iparam[1];
-  } else if (strategy == 1) {
-    def.strategy = FRAGSIM_STRATEGY_EDGE;
-    def.edge.k_Nms2 = param[0];
-    def.edge.a_max_mps2 = param[1];
-    def.edge.predictor = (fragsim_edge_predictor)iparam[0];
-    def.edge.reach = (fragsim_edge_reach)iparam[1];
-    def.edge.horizon = (fragsim_edge_horizon)iparam[2];
-    def.edge.replan = (fragsim_edge_replan)iparam[3];
-    def.horizon_cap_s = param[2];
-  } else if (strategy == 2) {
-    def.strategy = FRAGSIM_STRATEGY_DEFLECT_ALL;
-    def.deflect_all.accel_mps2 = param[0];
-    def.deflect_all.range_m = param[1];
-  } else {
-    fprintf(stderr, "replay: unknown strategy %u\n", (unsigned)strategy);
+  if (def_size != sizeof def) {
+    fprintf(stderr, "replay: the dump's def has %u bytes, this library's %u\n", (unsigned)def_size,
+            (unsigned)sizeof def);
     return 2;
   }
-  /* The tool's look-ahead is the strategy's horizon_cap_s (above) and the physics; its steps
+  take(&r, &def, sizeof def);
+  for (s = sizeof def; s % 8 != 0; ++s) {
+    unsigned char pad;
+    take(&r, &pad, 1);
+  }
+  if (r.bad) {
+    fprintf(stderr, "replay: %s is truncated in its header\n", argv[1]);
+    return 2;
+  }
+  /* The tool's look-ahead is the strategy's horizon_cap_s (in the def) and the physics; its steps
    * carry end_time_s = INFINITY, handed over as they are. */
   if (fragsim_controller_create(&def, &ctl, message, sizeof message) != FRAGSIM_OK) {
     fprintf(stderr, "replay: create: %s\n", message);

@@ -1,4 +1,4 @@
-#include "control/id_table.hpp"
+#include "api/id_table.hpp"
 
 #include <algorithm>
 

@@ -38,9 +38,9 @@
 #include <vector>
 
 #include "strategies/cheap_rejection.hpp"
+#include "strategies/edge_min_params.hpp"
 #include "strategies/occlusion_bound.hpp"
 #include "strategies/strategy.hpp"
-#include "strategies/strategy_params.hpp"
 
 namespace fragsim {
 

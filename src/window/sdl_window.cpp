@@ -1,4 +1,4 @@
-#include "play/sdl_window.hpp"
+#include "window/sdl_window.hpp"
 
 #include <SDL.h>
 

@@ -1,5 +1,5 @@
-// The C API of include/fragsim/control.h over the tool's own strategy classes: the same compiled
-// code fragsim runs, fed a StepContext built from the caller's plain structs. Everything here is
+// The C API of fragsim/control.h over the strategy classes of strategies/: the same compiled code
+// fragsim runs, fed a StepContext built from the caller's plain structs. Everything here is
 // per controller (no globals); no exception leaves an API function.
 
 #include <algorithm>
@@ -14,7 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "control/id_table.hpp"
+#include "api/def_mapping.hpp"
+#include "api/id_table.hpp"
 #include "fragsim/control.h"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
@@ -22,9 +23,12 @@
 
 namespace {
 
-// The value fragsim_default_controller_def puts in internal_value: a def with anything else
-// skipped the defaults function, and its other fields may be garbage.
-constexpr std::int32_t kDefCookie = 0x46534331;  // "FSC1"
+using fragsim::control::deflect_all_params;
+using fragsim::control::edge_min_params;
+using fragsim::control::edge_params;
+using fragsim::control::kDefCookie;
+using fragsim::control::raw;
+
 constexpr std::int32_t kMaxFragments = std::numeric_limits<std::int32_t>::max() / 4;
 constexpr double kFrameTolerance = 1e-6;
 
@@ -75,53 +79,7 @@ Failure check_vec(const fragsim_vec3& v, const char* name, bool (*rule)(double),
   return {};
 }
 
-// An enum field as the int the caller stored. A C caller may store any int in it, and loading
-// an out-of-range value as the enum type is undefined in C++: the bytes are read as an int.
-template <class E>
-int raw(const E& e) {
-  static_assert(sizeof(E) == sizeof(int));
-  int v;
-  std::memcpy(&v, &e, sizeof v);
-  return v;
-}
-
-// The def's strategy parameters as the tool's parameter structs. The enums are converted as they
-// are: validate() refuses a def whose enums are out of range before anything reads them.
-fragsim::EdgeMinParams edge_min_params(const fragsim_controller_def& d) {
-  fragsim::EdgeMinParams p;
-  p.margin_m = d.edge_min.margin_m;
-  p.a_max_mps2 = d.edge_min.a_max_mps2;
-  p.camera_model = static_cast<fragsim::CameraModel>(raw(d.edge_min.camera_model));
-  p.camera_accel_mps2 = d.edge_min.camera_accel_mps2;
-  p.camera_turn_degps = d.edge_min.camera_turn_degps;
-  p.horizon_cap_s = d.horizon_cap_s;
-  p.max_solves = d.edge_min.max_solves;
-  for (std::size_t k = 0; k < 4; ++k) p.edge_weights[k] = d.edge_min.edge_weights[k];
-  p.cover_max = d.edge_min.cover_max;
-  p.cover_region = d.edge_min.cover_region;
-  return p;
-}
-
-fragsim::EdgeParams edge_params(const fragsim_controller_def& d) {
-  fragsim::EdgeParams p;
-  p.k = d.edge.k_Nms2;
-  p.a_max_mps2 = d.edge.a_max_mps2;
-  p.predictor = static_cast<fragsim::Predictor>(raw(d.edge.predictor));
-  p.reach = static_cast<fragsim::Reach>(raw(d.edge.reach));
-  p.horizon = static_cast<fragsim::Horizon>(raw(d.edge.horizon));
-  p.replan = static_cast<fragsim::Replan>(raw(d.edge.replan));
-  p.horizon_cap_s = d.horizon_cap_s;
-  return p;
-}
-
-fragsim::DeflectAllParams deflect_all_params(const fragsim_controller_def& d) {
-  fragsim::DeflectAllParams p;
-  p.accel_mps2 = d.deflect_all.accel_mps2;
-  p.range_m = d.deflect_all.range_m;
-  return p;
-}
-
-// A def field that is one of the tool's parameters, checked by that parameter's own key (the
+// A def field that is one of the strategies' parameters, checked by that parameter's own key (the
 // range a scene file's value must keep) and named by its C field. The fields are listed here,
 // not taken from the keys, because the C names differ (edge.k_Nms2, one horizon_cap_s for both
 // strategies) and the C struct cannot be reflected on.
@@ -586,34 +544,9 @@ FRAGSIM_API const char* fragsim_status_string(fragsim_status status) {
 }
 
 FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void) {
-  // The defaults are the tool's (strategies/*_params.hpp), read from its structs so they cannot
-  // drift.
-  const fragsim::EdgeMinParams em;
-  const fragsim::EdgeParams e;
-  const fragsim::DeflectAllParams da;
-  fragsim_controller_def d;
-  std::memset(&d, 0, sizeof d);
-  d.strategy = FRAGSIM_STRATEGY_EDGE_MIN;
-  d.edge_min.margin_m = em.margin_m;
-  d.edge_min.a_max_mps2 = em.a_max_mps2;
-  d.edge_min.camera_model = static_cast<fragsim_camera_model>(em.camera_model);
-  d.edge_min.camera_accel_mps2 = em.camera_accel_mps2;
-  d.edge_min.camera_turn_degps = em.camera_turn_degps;
-  d.edge.k_Nms2 = e.k;
-  d.edge.a_max_mps2 = e.a_max_mps2;
-  d.edge.predictor = static_cast<fragsim_edge_predictor>(e.predictor);
-  d.edge.reach = static_cast<fragsim_edge_reach>(e.reach);
-  d.edge.horizon = static_cast<fragsim_edge_horizon>(e.horizon);
-  d.edge.replan = static_cast<fragsim_edge_replan>(e.replan);
-  d.deflect_all.accel_mps2 = da.accel_mps2;
-  d.deflect_all.range_m = da.range_m;
-  d.edge_min.max_solves = em.max_solves;
-  for (std::size_t k = 0; k < 4; ++k) d.edge_min.edge_weights[k] = em.edge_weights[k];
-  d.edge_min.cover_max = em.cover_max;
-  d.edge_min.cover_region = em.cover_region;
-  d.horizon_cap_s = em.horizon_cap_s;  // edge's default is the same
-  d.internal_value = kDefCookie;
-  return d;
+  // The defaults are the parameter structs' (strategies/*_params.hpp), which fragsim's scenes
+  // use too: read from them, they cannot drift.
+  return fragsim::control::controller_def(FRAGSIM_STRATEGY_EDGE_MIN, {}, {}, {});
 }
 
 FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
