@@ -335,7 +335,7 @@ def check_includes(root):
     src = os.path.join(root, "src")
     quoted = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
     angled = re.compile(r"^\s*#\s*include\s*<([^>]+)>")
-    owners = {"ode/": "src/sim", "SDL": "src/play"}
+    owners = {"ode/": "src/sim", "SDL": "src/window"}
     reported = set()
     for d, dirs, names in os.walk(src):
         dirs[:] = [x for x in dirs if not x.startswith(".")]
