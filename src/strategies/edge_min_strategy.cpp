@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "geometry/first_root.hpp"
 #include "geometry/parabola.hpp"
+#include "geometry/time_to_plane.hpp"
 #include "strategies/force_cap.hpp"
 
 namespace fragsim {
@@ -320,19 +322,7 @@ double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half
   const double a = half_gy_mps2;
   const double b = vy_mps;
   const double c = y0_m - ground_m;
-  if (a != 0.0) {
-    const double disc = b * b - 4.0 * a * c;
-    if (disc >= 0.0) {
-      // Stable roots (as time_to_horizon): q = -(b + sign(b) sqrt(disc)) / 2, q / a and c / q.
-      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      const double r1 = q / a;
-      const double r2 = q != 0.0 ? c / q : r1;
-      const double later = std::max(r1, r2);
-      if (later > 0.0 && b + 2.0 * a * later < 0.0) return later;
-    }
-  } else if (b < 0.0 && c > 0.0) {
-    return -c / b;
-  }
+  if (const std::optional<double> t = time_to_plane_s(AxisQuadratic{c, b, a})) return *t;
   // No downward crossing ahead. Above the ground: it never comes down. At or below it (resting,
   // or sunk into it by the contact's softness): the path rises for good (gravity off or up) or
   // stays underground, where nothing it predicts is real.
