@@ -196,7 +196,7 @@ typedef struct fragsim_controller_def {
   int32_t internal_value;
 } fragsim_controller_def;
 
-/* The camera at the start of the step. */
+/* The camera at the start of the step: the C form of fragsim's pose, body and declared limits. */
 typedef struct fragsim_camera {
   fragsim_vec3 eye_m;
   /* Orthonormal (each unit length and at right angles within 1e-6): screen right, screen up and

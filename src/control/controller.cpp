@@ -16,6 +16,7 @@
 
 #include "control/id_table.hpp"
 #include "fragsim/control.h"
+#include "geometry/frustum.hpp"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
@@ -622,10 +623,11 @@ FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
   c.right = {1.0, 0.0, 0.0};
   c.up = {0.0, 1.0, 0.0};
   c.forward = {0.0, 0.0, -1.0};
-  c.fovy_deg = 60.0;
-  c.aspect = 16.0 / 9.0;
-  c.near_m = 0.1;
-  c.far_m = 500.0;
+  // The tool's default frustum, from its one home (geometry/frustum.hpp).
+  c.fovy_deg = fragsim::kDefaultFrustum.fovy_deg;
+  c.aspect = fragsim::kDefaultFrustum.aspect;
+  c.near_m = fragsim::kDefaultFrustum.near_m;
+  c.far_m = fragsim::kDefaultFrustum.far_m;
   c.body_half_m = {0.15, 0.1, 0.15};
   c.max_speed_mps = 3.0;
   c.max_accel_mps2 = 0.0;  // not declared

@@ -505,7 +505,7 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
   // Each strategy's rules across its keys (or with the camera), where it declares them.
   for (const StrategyEntry& e : table) {
     try {
-      e.check_across(s, strategy_camera(s));
+      e.check_across(s, s.camera.frustum_def());
     } catch (const InputError& x) {
       fail(x.what());
     }

@@ -10,14 +10,10 @@
 
 namespace fragsim {
 
-inline StrategyCamera strategy_camera(const Scene& scene) {
-  return {scene.camera.fovy_deg, scene.camera.aspect, scene.camera.near_m};
-}
-
 // The named strategy with its parameters taken from the scene's section of the same name.
 // Throws InputError.
 inline std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scene) {
-  return make_strategy(name, scene, strategy_camera(scene));
+  return make_strategy(name, scene, scene.camera.frustum_def());
 }
 
 }  // namespace fragsim

@@ -25,7 +25,7 @@ const ParamSpec<NoParams>& no_params() {
 
 const StrategyTable& strategy_table() {
   using S = StrategySettings;
-  using C = StrategyCamera;
+  using C = FrustumDef;
   static const StrategyTable table{
       strategy_entry("none", "no control; the reference run for deviation", no_params(),
                      [](const NoParams&, const C&) { return std::make_unique<NoneStrategy>(); }),
@@ -129,7 +129,7 @@ const StrategyEntry* find_strategy(std::string_view name, const StrategyTable& t
 }
 
 std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
-                                        const StrategyCamera& camera, const StrategyTable& table) {
+                                        const FrustumDef& camera, const StrategyTable& table) {
   if (const StrategyEntry* e = find_strategy(name, table)) {
     e->check(settings, camera);
     return e->make(settings, camera);

@@ -43,10 +43,9 @@ class ProbeStrategy : public Strategy {
 // The tool's table plus the one line that adds the probe.
 StrategyTable with_probe() {
   StrategyTable table = strategy_table();
-  table.push_back(strategy_entry("probe", "a test's strategy", probe_param_spec(),
-                                 [](const ProbeParams& p, const StrategyCamera&) {
-                                   return std::make_unique<ProbeStrategy>(p);
-                                 }));
+  table.push_back(strategy_entry(
+      "probe", "a test's strategy", probe_param_spec(),
+      [](const ProbeParams& p, const FrustumDef&) { return std::make_unique<ProbeStrategy>(p); }));
   return table;
 }
 
@@ -90,12 +89,12 @@ TEST(Registry, OneEntryAddsAStrategyToParserHelpAndConfigIni) {
             "probe.ini:2: probe.gain_mps2 = '11': must be in [0, 10]");
   EXPECT_EQ(parse_error("", {{"probe.gain_mps2", "nan"}}, table),
             "--probe.gain_mps2: probe.gain_mps2 = 'nan': must be finite");
-  const auto made = make_strategy("probe", s, strategy_camera(s), table);
+  const auto made = make_strategy("probe", s, s.camera.frustum_def(), table);
   EXPECT_EQ(dynamic_cast<const ProbeStrategy&>(*made).params().gain_mps2, 2.5);
   Scene bad = s;
   bad.get<ProbeParams>().gain_mps2 = -1.0;
   try {
-    make_strategy("probe", bad, strategy_camera(bad), table);
+    make_strategy("probe", bad, bad.camera.frustum_def(), table);
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "probe.gain_mps2 = -1: must be in [0, 10]");
