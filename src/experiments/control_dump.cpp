@@ -27,19 +27,19 @@ ControlDump::ControlDump(const std::string& path, std::string_view strategy, con
   std::array<std::int32_t, 8> iparam{};
   std::uint32_t id = 0;
   if (strategy == "edge-min") {
-    const EdgeMinParams& p = scene.edge_min;
+    const EdgeMinParams& p = scene.strategies.edge_min;
     param = {p.margin_m, p.a_max_mps2, p.camera_accel_mps2, p.camera_turn_degps, p.horizon_cap_s};
     iparam[0] = static_cast<std::int32_t>(p.camera_model);
     iparam[1] = p.max_solves;
   } else if (strategy == "edge") {
     id = 1;
-    const EdgeParams& p = scene.edge;
+    const EdgeParams& p = scene.strategies.edge;
     param = {p.k, p.a_max_mps2, p.horizon_cap_s};
     iparam = {static_cast<std::int32_t>(p.predictor), static_cast<std::int32_t>(p.reach),
               static_cast<std::int32_t>(p.horizon), static_cast<std::int32_t>(p.replan)};
   } else {
     id = 2;
-    param = {scene.deflect_all.accel_mps2, scene.deflect_all.range_m};
+    param = {scene.strategies.deflect_all.accel_mps2, scene.strategies.deflect_all.range_m};
   }
   bytes_.append("FSCDUMP1", 8);
   put(std::uint32_t{0x01020304});

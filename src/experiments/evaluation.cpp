@@ -23,7 +23,8 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
                     const EvaluationOptions& options) {
   auto strategy = make_strategy(strategy_name, scene);
   NearPlaneMetric near;
-  StrategyActivityMetric activity(scene.near_plane.depth_bits, scene.near_plane.ref_distance_m);
+  StrategyActivityMetric activity(scene.strategies.near_plane.depth_bits,
+                                  scene.strategies.near_plane.ref_distance_m);
   CostMetric cost;
   ExitMetric exits(scene.metrics);
   CameraTrack camera;

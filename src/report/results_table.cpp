@@ -86,7 +86,7 @@ std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluat
     // min_near_m is 0 when nothing was recorded; below the camera's near distance the run moved
     // the near plane, and what that costs is the depth resolution.
     if (s.min_near_m > 0.0 && s.min_near_m < scene.camera.near_m) {
-      const double ref_m = scene.near_plane.ref_distance_m;
+      const double ref_m = scene.strategies.near_plane.ref_distance_m;
       notes.push_back({s.strategy + ": near distance down to " + fixed_text(s.min_near_m, 3) +
                        " m, depth step at " + fixed_text(ref_m, 1) +
                        " m: " + fixed_text(1e3 * s.depth_step_m, 3) + " mm" +

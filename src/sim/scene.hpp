@@ -154,15 +154,15 @@ struct MetricsDef {
   double deviation_threshold_m = 0.01;  // a fragment moved more than this "deviated"
 };
 
-// A scene is also every strategy's settings (scene.edge.k): the strategies' sections of a scene
-// file are theirs.
-struct Scene : StrategySettings {
+struct Scene {
   std::string name = "unnamed";
   SimulationDef sim;
   ObjectDef object;
   ExplosionDef explosion;
   GroundDef ground;
   CameraDef camera;
+  // Every strategy's parameters (scene.strategies.edge.k): a scene file's strategy sections.
+  StrategySettings strategies;
   MetricsDef metrics;
 
   int fragment_count() const;

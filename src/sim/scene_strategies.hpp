@@ -13,7 +13,7 @@ namespace fragsim {
 // The named strategy with its parameters taken from the scene's section of the same name.
 // Throws InputError.
 inline std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scene) {
-  return make_strategy(name, scene, scene.camera.frustum_def());
+  return make_strategy(name, scene.strategies, scene.camera.frustum_def());
 }
 
 }  // namespace fragsim

@@ -35,7 +35,7 @@ TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
 
 TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
   Scene scene = scene_named("front");
-  scene.edge.k = 0.0;
+  scene.strategies.edge.k = 0.0;
   const auto runs = compare(scene, {"none", "edge"}, false);
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_EQ(runs[1].summary.deviation_max_m, 0.0);
@@ -195,7 +195,7 @@ TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
 // otherwise.
 TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
-  scene.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
   const std::string csv = summary_csv(scene, compare(scene, {"edge-min"}, true, nullptr, 2));
   EXPECT_EQ(fnv1a(without_new_columns(csv)), 0x50a3f6ec292999a9ull) << csv;
   EXPECT_EQ(fnv1a(csv), 0x53b4d51e67080ea7ull) << csv;

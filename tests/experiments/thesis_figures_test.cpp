@@ -19,7 +19,7 @@ int intersections(const RunSummary& s) {
 TEST(ThesisFigures, Fig4_3CandidatesNeverRiseAndFallToZero) {
   const Scene scene = scene_named("thesis1000");
   ASSERT_EQ(scene.fragment_count(), 1000);
-  ASSERT_EQ(scene.edge.replan, Replan::kNever);
+  ASSERT_EQ(scene.strategies.edge.replan, Replan::kNever);
   const std::vector<int> c =
       evaluate(scene, "edge", {nullptr, nullptr, false, {}}).candidates_per_step;
   ASSERT_FALSE(c.empty());

@@ -225,7 +225,7 @@ TEST(ResultsTable, NotesComeFromTheRunsNumbersNotTheirNames) {
       "box: 12 contact points with the wall",
       "edge: 5 fragments the acceleration cap left unsaved (capped and still intersecting)"};
   EXPECT_EQ(untimed, want);
-  EXPECT_EQ(scene.near_plane.ref_distance_m, 10.0);
+  EXPECT_EQ(scene.strategies.near_plane.ref_distance_m, 10.0);
 }
 
 TEST(ResultsTable, BestRowOnlyWhenTheGoalsWereMet) {

@@ -39,7 +39,7 @@ TEST(EdgeMinStrategy, FragmentAtTheLensIsPushedUpJustEnoughAndMisses) {
   // "Just enough" is the constant camera model's promise (the camera here does keep still); the
   // default bounded_accel adds what a camera accelerating upward could take back (below).
   Scene scene = test::single_fragment({0.03, 1.62, -10.0});
-  scene.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
   const Outcome o = run(scene, "edge-min");
   int pushes = 0;
   for (const auto& step : o.rec.steps) {
@@ -95,13 +95,13 @@ TEST(EdgeMinStrategy, NeedsFarLessImpulseThanTheThesisForce) {
 TEST(EdgeMinStrategy, TooCloseForTheCapIsReportedUnsaved) {
   // 1.5 m away at 10 m/s with a_max = 1 m/s^2: it needs ~0.24 m in 0.15 s, about 20 m/s^2.
   Scene scene = test::single_fragment({0.03, 1.62, -1.5});
-  scene.edge_min.a_max_mps2 = 1.0;
+  scene.strategies.edge_min.a_max_mps2 = 1.0;
   const Outcome o = run(scene, "edge-min");
   EXPECT_EQ(o.summary.camera_hit_fragments, 1);
   EXPECT_EQ(o.summary.unsaved_by_cap, 1);
   EXPECT_GT(o.summary.capped_forces, 0);
   // With the default cap it is saved.
-  scene.edge_min.a_max_mps2 = 50.0;
+  scene.strategies.edge_min.a_max_mps2 = 50.0;
   EXPECT_EQ(run(scene, "edge-min").summary.camera_hit_fragments, 0);
 }
 

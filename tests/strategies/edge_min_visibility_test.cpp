@@ -25,8 +25,8 @@ constexpr double kDt = 1.0 / 60.0;
 // ways out need top 0.2166 m, bottom 0.2566, right 0.2766, left 0.2966 m of sideways travel.
 Scene at_the_lens(const std::array<double, 4>& weights) {
   Scene scene = test::single_fragment({0.01, 1.62, -10.0});
-  scene.edge_min.camera_model = CameraModel::kConstant;
-  scene.edge_min.edge_weights = weights;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.edge_weights = weights;
   return scene;
 }
 
@@ -84,7 +84,7 @@ TEST(EdgeWeights, AHeavierWeightBuysAFartherEdge) {
 TEST(EdgeWeights, EqualWeightsGiveBitIdenticalForces) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
   const auto a = test::run_recorded(scene, "edge-min");
-  scene.edge_min.edge_weights = {2.5, 2.5, 2.5, 2.5};
+  scene.strategies.edge_min.edge_weights = {2.5, 2.5, 2.5, 2.5};
   const auto b = test::run_recorded(scene, "edge-min");
   ASSERT_EQ(a.rec.steps.size(), b.rec.steps.size());
   int forces = 0;
@@ -237,7 +237,7 @@ TEST(CoverMax, MeasuredCentralOcclusionFollowsTheBound) {
   scene.sim.duration_s = 1.5;
   const RunSummary none = evaluate(scene, "none", {}).summary;
   EXPECT_GT(none.central_occlusion_max, 0.9);
-  scene.edge_min.cover_max = 0.5;
+  scene.strategies.edge_min.cover_max = 0.5;
   const RunSummary bounded = evaluate(scene, "edge-min", {}).summary;
   // Discs for boxes and a 32 x 18 grid for the metric's 80 x 44 pixels: 10 points of tolerance.
   EXPECT_LE(bounded.central_occlusion_max, 0.6);

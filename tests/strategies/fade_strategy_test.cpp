@@ -92,18 +92,18 @@ TEST(FadeParams, EndMustBeNearerThanStartAndEachKeyInRange) {
     return "";
   };
   EXPECT_EQ(error(), "");
-  scene.get<FadeParams>().end_m = 1.0;  // equal to start_m: no ramp
+  scene.strategies.get<FadeParams>().end_m = 1.0;  // equal to start_m: no ramp
   EXPECT_NE(error().find("fade.end_m = 1: must be < fade.start_m = 1"), std::string::npos)
       << error();
-  scene.get<FadeParams>().end_m = 2.0;
+  scene.strategies.get<FadeParams>().end_m = 2.0;
   EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.get<FadeParams>().end_m = -0.1;
+  scene.strategies.get<FadeParams>().end_m = -0.1;
   EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.get<FadeParams>().end_m = 0.0;  // invisible only at the eye: allowed
+  scene.strategies.get<FadeParams>().end_m = 0.0;  // invisible only at the eye: allowed
   EXPECT_EQ(error(), "");
-  scene.get<FadeParams>().start_m = std::numeric_limits<double>::quiet_NaN();
+  scene.strategies.get<FadeParams>().start_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
-  scene.get<FadeParams>().start_m = 0.0;
+  scene.strategies.get<FadeParams>().start_m = 0.0;
   EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
 }
 

@@ -78,7 +78,7 @@ TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
   // The thesis ball: V_c (t_G - t) + radii = 1 m/s * 1.5 s + 0.27 m < 2 m, with t_G the cap of
   // 1.5 s (zero gravity: the path never comes down; the default 3 s cap would give 3.27 m).
   Scene scene = test::single_fragment(kBeside);
-  scene.edge.horizon_cap_s = 1.5;
+  scene.strategies.edge.horizon_cap_s = 1.5;
   const Outcome o = run(scene, "edge");
   for (const auto& step : o.rec.steps) {
     EXPECT_TRUE(step.candidates.empty());
@@ -88,7 +88,7 @@ TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
 
 TEST(EdgeStrategy, ZeroGainReproducesNoneExactly) {
   Scene scene = test::single_fragment(kAtLens);
-  scene.edge.k = 0.0;
+  scene.strategies.edge.k = 0.0;
   const Outcome edge = run(scene, "edge");
   const Outcome none = run(scene, "none");
   ASSERT_EQ(edge.rec.steps.size(), none.rec.steps.size());
@@ -99,8 +99,8 @@ TEST(EdgeStrategy, ZeroGainReproducesNoneExactly) {
 
 TEST(EdgeStrategy, AccelerationCapHolds) {
   Scene scene = test::single_fragment(kAtLens);
-  scene.edge.k = 1e9;
-  scene.edge.a_max_mps2 = 50.0;
+  scene.strategies.edge.k = 1e9;
+  scene.strategies.edge.a_max_mps2 = 50.0;
   const Outcome o = run(scene, "edge");
   const double mass_kg = 600.0 * 0.1 * 0.1 * 0.1;
   for (const auto& step : o.rec.steps) {
@@ -134,7 +134,7 @@ TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
   double min_near = 1.0;
   for (const auto& step : o.rec.steps) min_near = std::min(min_near, step.near_m);
   EXPECT_LT(min_near, 0.1);
-  EXPECT_GE(min_near, scene.near_plane.min_near_m);
+  EXPECT_GE(min_near, scene.strategies.near_plane.min_near_m);
   EXPECT_EQ(o.rec.steps.front().near_m, 0.1);
   EXPECT_EQ(o.rec.steps.back().near_m, 0.1);  // it has flown past
   EXPECT_EQ(o.summary.near_fragments, 0);
@@ -174,7 +174,7 @@ TEST(Registry, UnknownNameAndBadParameterAreNamed) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("magic"), std::string::npos);
   }
-  scene.edge.k = -1.0;
+  scene.strategies.edge.k = -1.0;
   try {
     make_strategy("edge", scene);
     FAIL() << "no exception";
@@ -201,7 +201,7 @@ Scene bouncing_fragment(Replan replan) {
   s.ground.restitution = 0.5;
   s.ground.friction = 0.0;  // keeps its speed toward the camera through the bounce
   s.sim.duration_s = 2.0;
-  s.edge.replan = replan;
+  s.strategies.edge.replan = replan;
   return s;
 }
 

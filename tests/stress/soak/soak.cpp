@@ -142,8 +142,10 @@ int main(int argc, char** argv) {
     t.collisions += sc.sim.fragment_collisions ? 1 : 0;
     t.dt_min += sc.sim.dt_s <= 1e-3 ? 1 : 0;
     t.dt_max += sc.sim.dt_s >= 0.1 ? 1 : 0;
-    t.caps_zero += sc.edge.a_max_mps2 == 0.0 || sc.edge_min.a_max_mps2 == 0.0 ? 1 : 0;
-    t.caps_huge += sc.edge.a_max_mps2 >= 1e6 || sc.edge_min.a_max_mps2 >= 1e6 ? 1 : 0;
+    t.caps_zero +=
+        sc.strategies.edge.a_max_mps2 == 0.0 || sc.strategies.edge_min.a_max_mps2 == 0.0 ? 1 : 0;
+    t.caps_huge +=
+        sc.strategies.edge.a_max_mps2 >= 1e6 || sc.strategies.edge_min.a_max_mps2 >= 1e6 ? 1 : 0;
     t.fast_blast += sc.explosion.speed_mps >= 200.0 ? 1 : 0;
     t.fast_camera += sc.camera.max_speed_mps >= 100.0 ? 1 : 0;
     ++t.modes[mode_name(sc)];
