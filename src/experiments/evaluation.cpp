@@ -83,7 +83,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
 
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
                                 bool occlusion, RunObserver* extra, int jobs) {
-  for (const std::string& name : strategies) make_strategy(name, scene);  // validate all first
+  for (const std::string& name : strategies) validate_strategy_settings(name, scene);  // all first
   TrajectoryRecord reference;
   EvaluationOptions ref_opts;
   ref_opts.record = &reference;

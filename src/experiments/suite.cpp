@@ -184,7 +184,7 @@ void validate_suite(const std::map<std::string, std::string>& scenes,
     if (!seen.insert({r.scene, r.distance_m, r.aim, r.toward_camera_mps, r.mode}).second) continue;
     for (const SuiteVariant& v : variants) {
       const Scene scene = variant_scene(scenes.at(r.scene), r, v);
-      make_strategy(v.strategy, scene);
+      validate_strategy_settings(v.strategy, scene);
     }
   }
 }

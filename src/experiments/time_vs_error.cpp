@@ -185,7 +185,7 @@ std::vector<BenchRow> run_time_vs_error(const Scene& base, const std::vector<Ben
           "bench config '" + c.name + "': simulation.dt_s = " + format_double(s.sim.dt_s) +
           " does not divide the sample interval " + format_double(options.sample_dt_s) + " s");
     }
-    make_strategy(options.strategy, s);  // bad strategy parameters fail before anything runs
+    validate_strategy_settings(options.strategy, s);  // bad parameters fail before anything runs
     return s;
   };
   // Two configurations are the same simulation when their scenes agree once `auto` is replaced by

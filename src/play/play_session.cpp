@@ -235,12 +235,14 @@ PlaySession::PlaySession(const Scene& scene, PlayOptions options, PlayFrontend& 
       frontend_(frontend),
       strategies_(strategy_names()),
       controls_(scene.camera, make_camera_motion(scene)->pose_at(0.0)) {
-  for (const std::string& name : strategies_) make_strategy(name, flight_scene_);
+  for (const std::string& name : strategies_) validate_strategy_settings(name, flight_scene_);
   current_ = strategies_.size();
   for (std::size_t i = 0; i < strategies_.size(); ++i) {
     if (strategies_[i] == options_.strategy) current_ = i;
   }
-  if (current_ == strategies_.size()) make_strategy(options_.strategy, flight_scene_);  // throws
+  if (current_ == strategies_.size()) {
+    validate_strategy_settings(options_.strategy, flight_scene_);  // throws
+  }
 }
 
 void PlaySession::run() {

@@ -87,8 +87,14 @@ std::string describe_strategies(const StrategyTable& table);
 const StrategyEntry* find_strategy(std::string_view name,
                                    const StrategyTable& table = strategy_table());
 
-// The named strategy, its parameters checked first. Throws InputError naming the strategy
-// (unknown name) or the parameter and its value.
+// Whether the named strategy can be made with these parameters, without making it: its keys'
+// rules on the values held, then its rules across keys and with the frustum. Throws InputError
+// naming the strategy (unknown name) or the parameter and its value, one line.
+void validate_strategy_settings(std::string_view name, const StrategySettings& settings,
+                                const FrustumDef& camera,
+                                const StrategyTable& table = strategy_table());
+
+// The named strategy, validated first (validate_strategy_settings, the same errors).
 std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
                                         const FrustumDef& camera,
                                         const StrategyTable& table = strategy_table());

@@ -138,6 +138,47 @@ std::string make_error(const Scene& scene, const std::string& name) {
   return "";
 }
 
+std::string validate_error(const Scene& scene, const std::string& name) {
+  try {
+    validate_strategy_settings(name, scene);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Validation is the factory's checks without the making: the same one-line errors, no strategy.
+TEST(Registry, ValidationChecksWithoutMakingTheStrategy) {
+  static int made = 0;
+  StrategyTable table = strategy_table();
+  table.push_back(strategy_entry("probe", "a test's strategy", probe_param_spec(),
+                                 [](const ProbeParams& p, const FrustumDef&) {
+                                   ++made;
+                                   return std::make_unique<ProbeStrategy>(p);
+                                 }));
+  Scene s;
+  const FrustumDef frustum = s.camera.frustum_def();
+  validate_strategy_settings("probe", s.strategies, frustum, table);
+  EXPECT_EQ(made, 0);
+  make_strategy("probe", s.strategies, frustum, table);
+  EXPECT_EQ(made, 1);
+  s.strategies.get<ProbeParams>().gain_mps2 = -1.0;
+  EXPECT_THROW(validate_strategy_settings("probe", s.strategies, frustum, table), InputError);
+  EXPECT_EQ(made, 1);
+
+  Scene bad;
+  bad.strategies.edge_min.max_solves = -1;
+  bad.strategies.wall.thickness_m = 2.0;
+  bad.strategies.near_plane.min_near_m = 0.5;
+  for (const char* name : {"edge-min", "wall", "near-plane", "edge", "magic"}) {
+    EXPECT_EQ(validate_error(bad, name), make_error(bad, name)) << name;
+  }
+  EXPECT_EQ(validate_error(bad, "magic"),
+            "unknown strategy 'magic' (known: none, wall, deflect-all, near-plane, edge, "
+            "edge-min, fade)");
+  EXPECT_EQ(validate_error(bad, "edge"), "");
+}
+
 TEST(Registry, ParametersSetInCodeAreCheckedByTheirKeys) {
   const double inf = std::numeric_limits<double>::infinity();
   Scene s;
