@@ -183,7 +183,7 @@ void BM_StrategyStep(benchmark::State& state, S strategy) {
     out.clear();
     state.ResumeTiming();
     s.step(ctx, out);
-    candidates = out.candidates.size();
+    candidates = out.activity.candidates.size();
     benchmark::DoNotOptimize(out.forces.data());
   }
   state.counters["fragments"] = static_cast<double>(ctx.fragments.size());

@@ -513,14 +513,14 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
     for (std::size_t i = 0; i < n; ++i) last_ids[i] = src.id(i);
   }
   if (stats != nullptr) {
-    stats->candidates = static_cast<std::int32_t>(out.candidates.size());
+    stats->candidates = static_cast<std::int32_t>(out.activity.candidates.size());
     stats->pushed = static_cast<std::int32_t>(out.forces.size());
-    stats->capped = static_cast<std::int32_t>(out.capped.size());
-    stats->guarded = out.guarded;
+    stats->capped = static_cast<std::int32_t>(out.activity.capped.size());
+    stats->guarded = out.activity.guarded;
     stats->new_ids = new_ids;
     stats->dropped_ids = dropped_ids;
-    stats->deferred = out.deferred;
-    stats->rejected_cheaply = out.rejected_cheaply;
+    stats->deferred = out.activity.deferred;
+    stats->rejected_cheaply = out.activity.rejected_cheaply;
   }
   error.clear();
   return FRAGSIM_OK;

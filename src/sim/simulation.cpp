@@ -152,10 +152,10 @@ RunTotals simulate(const Scene& scene, Strategy& strategy, const CameraMotion& p
     snap.camera_velocity_mps = path.velocity_at(t_next);
     snap.fragments = states;
     snap.forces = out.forces;
-    snap.candidates = out.candidates;
-    snap.capped = out.capped;
-    snap.guarded = out.guarded;
-    snap.deferred = out.deferred;
+    snap.candidates = out.activity.candidates;
+    snap.capped = out.activity.capped;
+    snap.guarded = out.activity.guarded;
+    snap.deferred = out.activity.deferred;
     snap.opacity = out.opacity;
     snap.camera_hits = world.camera_hits();
     snap.wall_contacts = world.wall_contacts();

@@ -445,7 +445,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const std::span<const char> clears = clearance_.clears();
   const std::span<const char> grown_clears = clearance_.grown_clears();
   const std::span<const std::int32_t> unsettled = clearance_.unsettled();
-  out.rejected_cheaply = static_cast<int>(n - unsettled.size());
+  out.activity.rejected_cheaply = static_cast<int>(n - unsettled.size());
 
   // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
   // back (the camera's forward axis tilted toward the ground can).
@@ -490,7 +490,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       for (std::size_t k = cap; k < queue_.size(); ++k) {
         deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
       }
-      out.deferred = static_cast<int>(queue_.size() - cap);
+      out.activity.deferred = static_cast<int>(queue_.size() - cap);
     }
   }
 
@@ -522,7 +522,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                                                                  : 2.0 * params_.a_max_mps2 + 1.0;
     if (!robust) {
       if (!nominal.threat) return;
-      out.candidates.push_back(static_cast<int>(i));
+      out.activity.candidates.push_back(static_cast<int>(i));
       if (a_nominal <= 0.0) return;
       apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                    params_.a_max_mps2);
@@ -545,7 +545,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     const WorstCase wc =
         grown_clear ? WorstCase{} : worst_case(cons, slabs, own_look_s, ctx.dt_s, 0.0);
     if (!nominal.threat && !wc.threat) return;
-    out.candidates.push_back(static_cast<int>(i));
+    out.activity.candidates.push_back(static_cast<int>(i));
     if (wc.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
       // moving the fragment by a dt t along its axis; from the next step on, a push of at most
