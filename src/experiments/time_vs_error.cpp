@@ -61,8 +61,8 @@ void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measu
   if (first) {
     m.row.dt_s = scene.sim.dt_s;
     m.row.steps = totals.steps;
-    m.row.near_fragments = s.near_fragments;
-    m.row.camera_hit_fragments = s.camera_hit_fragments;
+    m.row.near_fragments = s.intersections.near_fragments;
+    m.row.camera_hit_fragments = s.intersections.camera_hit_fragments;
     m.row.candidates = candidates;
     m.row.predicted_contacts = probe.predicted_contacts();
     m.row.prediction_error_mean_m = probe.prediction_error_mean_m();
@@ -70,8 +70,8 @@ void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measu
     m.samples = probe.samples();
     m.ever_candidate = probe.ever_candidate();
     m.first_contact_s = probe.first_contact_s();
-  } else if (s.near_fragments != m.row.near_fragments ||
-             s.camera_hit_fragments != m.row.camera_hit_fragments ||
+  } else if (s.intersections.near_fragments != m.row.near_fragments ||
+             s.intersections.camera_hit_fragments != m.row.camera_hit_fragments ||
              candidates != m.row.candidates || probe.samples() != m.samples) {
     // Timing repeats must be the same run; a difference is a determinism bug, not noise.
     throw std::runtime_error("bench config '" + m.row.config.name +

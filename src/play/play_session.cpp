@@ -99,8 +99,8 @@ class PlaySession::FlightObserver final : public RunObserver {
     RunSummary counts;
     near_.fill(counts);
     hud_.t_s = snap.t_s;
-    hud_.near_fragments = counts.near_fragments;
-    hud_.camera_hits = counts.camera_hit_fragments;
+    hud_.near_fragments = counts.intersections.near_fragments;
+    hud_.camera_hits = counts.intersections.camera_hit_fragments;
     hud_.candidates = static_cast<int>(snap.candidates.size());
     hud_.strategy_ms = 1e3 * snap.strategy_s;
     hud_.message = s_.message_;

@@ -29,8 +29,8 @@ TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
   EvaluationOptions opts;
   opts.reference = &ref;
   const RunSummary s = evaluate(scene, "none", opts).summary;
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.deviated_share, 0.0);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
+  EXPECT_EQ(s.deviation.deviated_share, 0.0);
 }
 
 TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
@@ -38,10 +38,11 @@ TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
   scene.strategies.edge.k = 0.0;
   const auto runs = compare(scene, {"none", "edge"}, false);
   ASSERT_EQ(runs.size(), 2u);
-  EXPECT_EQ(runs[1].summary.deviation_max_m, 0.0);
-  EXPECT_EQ(runs[1].summary.near_fragments, runs[0].summary.near_fragments);
+  EXPECT_EQ(runs[1].summary.deviation.max_m, 0.0);
+  EXPECT_EQ(runs[1].summary.intersections.near_fragments,
+            runs[0].summary.intersections.near_fragments);
   EXPECT_EQ(runs[1].near_per_step, runs[0].near_per_step);
-  EXPECT_GT(runs[1].summary.candidates_initial, 0);  // it predicted, it just did not push
+  EXPECT_GT(runs[1].summary.activity.candidates_initial, 0);  // it predicted, it just did not push
 }
 
 TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
@@ -58,13 +59,13 @@ TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
     const RunSummary& b = back[i];
     EXPECT_EQ(b.strategy, a.strategy);
     EXPECT_EQ(b.seed, a.seed);
-    EXPECT_EQ(b.near_fragments, a.near_fragments);
-    EXPECT_EQ(b.camera_hit_fragments, a.camera_hit_fragments);
-    EXPECT_EQ(b.deviation_mean_m, a.deviation_mean_m);  // shortest round-trip text: exact
-    EXPECT_EQ(b.occlusion_max, a.occlusion_max);
-    EXPECT_EQ(b.impulse_Ns, a.impulse_Ns);
-    EXPECT_EQ(b.min_near_m, a.min_near_m);
-    EXPECT_EQ(b.exits_top, a.exits_top);
+    EXPECT_EQ(b.intersections.near_fragments, a.intersections.near_fragments);
+    EXPECT_EQ(b.intersections.camera_hit_fragments, a.intersections.camera_hit_fragments);
+    EXPECT_EQ(b.deviation.mean_m, a.deviation.mean_m);  // shortest round-trip text: exact
+    EXPECT_EQ(b.occlusion.max, a.occlusion.max);
+    EXPECT_EQ(b.activity.impulse_Ns, a.activity.impulse_Ns);
+    EXPECT_EQ(b.activity.min_near_m, a.activity.min_near_m);
+    EXPECT_EQ(b.exits.top, a.exits.top);
   }
   // config.ini is the resolved scene and loads back to the same scene.
   EXPECT_EQ(scene_to_ini(load_scene(dir + "/config.ini")), scene_to_ini(scene));
@@ -86,11 +87,11 @@ TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
   std::vector<Evaluation> runs(4);
   runs[0].summary.strategy = "none";
   runs[1].summary.strategy = "a";
-  runs[1].summary.near_fragments = 1;
+  runs[1].summary.intersections.near_fragments = 1;
   runs[2].summary.strategy = "b";
-  runs[2].summary.deviation_mean_m = 0.5;
+  runs[2].summary.deviation.mean_m = 0.5;
   runs[3].summary.strategy = "c";
-  runs[3].summary.deviation_mean_m = 0.2;
+  runs[3].summary.deviation.mean_m = 0.2;
   const auto best = best_for_thesis_goals(runs);
   ASSERT_TRUE(best.has_value());
   EXPECT_EQ(*best, 3u);
@@ -216,11 +217,11 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
                                      "near-plane", "edge", "edge-min"};
   const std::vector<Evaluation> runs = compare(scene, all, true, nullptr, 2);
-  EXPECT_GT(runs.front().summary.near_fragments, 0);
-  EXPECT_GT(runs.front().summary.camera_hit_fragments, 0);
+  EXPECT_GT(runs.front().summary.intersections.near_fragments, 0);
+  EXPECT_GT(runs.front().summary.intersections.camera_hit_fragments, 0);
   EXPECT_EQ(runs.back().summary.strategy, "edge-min");
-  EXPECT_EQ(runs.back().summary.near_fragments, 0);
-  EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
+  EXPECT_EQ(runs.back().summary.intersections.near_fragments, 0);
+  EXPECT_EQ(runs.back().summary.intersections.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
   EXPECT_EQ(fnv1a(csv), 0x819bc71d362b8e86ull) << csv;
 }
@@ -233,11 +234,11 @@ TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
   const std::vector<Evaluation> runs = compare(scene, {"fade"}, true, nullptr, 2);
   ASSERT_EQ(runs.size(), 1u);
   const RunSummary& s = runs[0].summary;
-  EXPECT_EQ(s.near_fragments, 0);
-  EXPECT_EQ(s.camera_hit_fragments, 34);
-  EXPECT_EQ(s.vanished_fragments, 111);
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.impulse_Ns, 0.0);
+  EXPECT_EQ(s.intersections.near_fragments, 0);
+  EXPECT_EQ(s.intersections.camera_hit_fragments, 34);
+  EXPECT_EQ(s.intersections.vanished_fragments, 111);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
+  EXPECT_EQ(s.activity.impulse_Ns, 0.0);
   const std::string csv = summary_csv(scene, runs);
   EXPECT_EQ(fnv1a(without_columns(
                 csv, {"pushed_exits_top", "pushed_exits_bottom", "pushed_exits_left",

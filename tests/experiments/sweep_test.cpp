@@ -201,8 +201,8 @@ TEST(SweepSummary, SummaryCellsAreSummaryCsvRows) {
   e.summary.scene = "hand";
   e.summary.strategy = "edge";
   e.summary.seed = 42;
-  e.summary.near_fragments = 3;
-  e.summary.deviation_mean_m = 0.1;
+  e.summary.intersections.near_fragments = 3;
+  e.summary.deviation.mean_m = 0.1;
   auto join = [](const Values& cells) {
     std::string s;
     for (const std::string& c : cells) s += (s.empty() ? "" : ",") + c;

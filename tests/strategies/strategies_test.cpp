@@ -28,8 +28,8 @@ const Eigen::Vector3d kBeside{2.03, 1.62, -10.0};
 
 TEST(NoneStrategy, FragmentAtTheLensHitsAndFliesStraight) {
   const Outcome o = run(test::single_fragment(kAtLens), "none");
-  EXPECT_EQ(o.summary.near_fragments, 1);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 1);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 1);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 1);
   for (const auto& step : o.rec.steps) {
     EXPECT_TRUE(step.forces.empty());
     // No gravity, no contact: x and y never change, the speed stays 10 m/s.
@@ -56,8 +56,8 @@ TEST(EdgeStrategy, FragmentAtTheLensIsPushedToTheNearestEdgeAndMisses) {
     }
   }
   EXPECT_GT(pushes, 0);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
@@ -71,7 +71,7 @@ TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
     }
   }
   EXPECT_GT(pushes, 0);
-  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
 }
 
 TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
@@ -119,8 +119,8 @@ TEST(WallStrategy, IncomingFragmentBouncesOffTheWall) {
   for (const auto& step : o.rec.steps)
     closest_m = std::min(closest_m, -step.fragments[0].position_m.z());
   EXPECT_GT(closest_m, 0.5);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
@@ -129,7 +129,7 @@ TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
   // (half width 0.0103 m) lets it pass uncut.
   Scene scene = test::single_fragment({0.13, 1.6, -10.0});
   scene.camera.body_size_m = {0.1, 0.1, 0.1};
-  EXPECT_EQ(run(scene, "none").summary.near_fragments, 1);
+  EXPECT_EQ(run(scene, "none").summary.intersections.near_fragments, 1);
   const Outcome o = run(scene, "near-plane");
   double min_near = 1.0;
   for (const auto& step : o.rec.steps) min_near = std::min(min_near, step.near_m);
@@ -137,7 +137,7 @@ TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
   EXPECT_GE(min_near, scene.strategies.near_plane.min_near_m);
   EXPECT_EQ(o.rec.steps.front().near_m, 0.1);
   EXPECT_EQ(o.rec.steps.back().near_m, 0.1);  // it has flown past
-  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
 }
 
 TEST(NearPlaneStrategy, DepthStep) {
