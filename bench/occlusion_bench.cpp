@@ -49,7 +49,7 @@ void BM_OcclusionObserve(benchmark::State& state) {
   }
   fragsim::RunSummary summary;
   metric.fill(summary);
-  state.counters["occlusion_mean"] = summary.occlusion_mean;
+  state.counters["occlusion_mean"] = summary.occlusion.mean;
   state.counters["ns_per_fragment"] =
       benchmark::Counter(static_cast<double>(n) * static_cast<double>(state.iterations()),
                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);

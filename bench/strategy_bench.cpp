@@ -43,12 +43,12 @@ fragsim::ContactQuery query_at_start(const Scene& scene) {
   fragsim::ContactQuery q;
   q.camera_m = scene.camera.waypoints_m.front();
   q.gravity_mps2 = scene.sim.gravity_mps2;
-  q.predictor = scene.edge.predictor;
+  q.predictor = scene.strategies.edge.predictor;
   q.dt_s = scene.sim.dt_s;
-  q.y_ref_m =
-      scene.edge.horizon == fragsim::Horizon::kCamera ? q.camera_m.y() : scene.ground.height_m;
+  q.y_ref_m = scene.strategies.edge.horizon == fragsim::Horizon::kCamera ? q.camera_m.y()
+                                                                         : scene.ground.height_m;
   q.remaining_s = scene.sim.duration_s;
-  q.reach = scene.edge.reach;
+  q.reach = scene.strategies.edge.reach;
   q.max_speed_mps = scene.camera.max_speed_mps;
   q.body_radius_m = (0.5 * scene.camera.body_size_m).norm();
   return q;
@@ -151,7 +151,7 @@ void BM_StrategyStep(benchmark::State& state, S strategy) {
     out.clear();
     state.ResumeTiming();
     s.step(ctx, out);
-    candidates = out.candidates.size();
+    candidates = out.activity.candidates.size();
     benchmark::DoNotOptimize(out.forces.data());
   }
   state.counters["fragments"] = static_cast<double>(ctx.fragments.size());
@@ -168,10 +168,11 @@ void strategy_args(benchmark::internal::Benchmark* b) {
   b->ArgNames({"splits", "step"})->Unit(benchmark::kMicrosecond);
 }
 
-BENCHMARK_CAPTURE(BM_StrategyStep, edge, fragsim::EdgeStrategy(scene_of(SceneKind::kAimed).edge))
+BENCHMARK_CAPTURE(BM_StrategyStep, edge,
+                  fragsim::EdgeStrategy(scene_of(SceneKind::kAimed).strategies.edge))
     ->Apply(strategy_args);
 BENCHMARK_CAPTURE(BM_StrategyStep, edge_min,
-                  fragsim::EdgeMinStrategy(scene_of(SceneKind::kAimed).edge_min))
+                  fragsim::EdgeMinStrategy(scene_of(SceneKind::kAimed).strategies.edge_min))
     ->Apply(strategy_args);
 
 }  // namespace
@@ -245,12 +246,13 @@ void BM_StrategyRun(benchmark::State& state, S strategy) {
   state.counters["checksum"] = checksum;
 }
 
-BENCHMARK_CAPTURE(BM_StrategyRun, edge, fragsim::EdgeStrategy(scene_of(SceneKind::kAimed).edge))
+BENCHMARK_CAPTURE(BM_StrategyRun, edge,
+                  fragsim::EdgeStrategy(scene_of(SceneKind::kAimed).strategies.edge))
     ->Arg(12)
     ->ArgName("splits")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_StrategyRun, edge_min,
-                  fragsim::EdgeMinStrategy(scene_of(SceneKind::kAimed).edge_min))
+                  fragsim::EdgeMinStrategy(scene_of(SceneKind::kAimed).strategies.edge_min))
     ->Arg(12)
     ->ArgName("splits")
     ->Unit(benchmark::kMillisecond);

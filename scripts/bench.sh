@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Every benchmark behind the README's results table, from one command. Builds the release preset
+# Every benchmark behind docs/benchmarks.md, from one command. Builds the release preset
 # (installing what is missing), then writes into OUT (default bench-results/):
 #   machine.txt                     the machine, compiler and date the numbers belong to
 #   micro.txt, micro.json           Google Benchmark: prediction kernel, strategy step, physics

@@ -108,7 +108,7 @@ int cmd_bench(const std::vector<std::string>& args) {
   TimeVsErrorOptions options;
   options.strategy = p.options["strategy"].as<std::string>();
   try {
-    make_strategy(options.strategy, p.scene);
+    validate_strategy_settings(options.strategy, p.scene);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--strategy: ") + e.what());
   }

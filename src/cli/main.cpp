@@ -70,7 +70,7 @@ void add_output_options(po::options_description& own) {
 int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& names) {
   for (const std::string& n : names) {
     try {
-      make_strategy(n, p.scene);
+      validate_strategy_settings(n, p.scene);
     } catch (const InputError& e) {
       throw UsageError(std::string("--strategies: ") + e.what());
     }
@@ -155,7 +155,7 @@ int dump_control(const cli::ParsedCommand& p, const std::string& strategy) {
     throw UsageError("--dump-control " + path + ": exists (use --force to overwrite)");
   }
   try {
-    make_strategy(strategy, p.scene);
+    validate_strategy_settings(strategy, p.scene);
   } catch (const InputError& e) {
     throw UsageError(std::string("--strategy: ") + e.what());
   }

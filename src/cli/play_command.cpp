@@ -108,9 +108,9 @@ int cmd_play(const std::vector<std::string>& args) {
   }
 
   try {
-    // Tab and 1-9 reach every strategy: each is made once here, so a bad one fails now.
-    make_strategy(options.strategy, p.scene);
-    for (const std::string& name : strategy_names()) make_strategy(name, p.scene);
+    // Tab and 1-9 reach every strategy: each is validated here, so a bad one fails now.
+    validate_strategy_settings(options.strategy, p.scene);
+    for (const std::string& name : strategy_names()) validate_strategy_settings(name, p.scene);
   } catch (const InputError& e) {
     throw UsageError(std::string("--strategy: ") + e.what());
   }

@@ -133,7 +133,7 @@ int cmd_render(const std::vector<std::string>& args) {
 
   const std::string strategy = p.options["strategy"].as<std::string>();
   try {
-    make_strategy(strategy, p.scene);
+    validate_strategy_settings(strategy, p.scene);
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--strategy: ") + e.what());
   }

@@ -121,7 +121,7 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
   }
   for (const std::string& n : plan.strategies) {
     try {
-      make_strategy(n, p.scene);
+      validate_strategy_settings(n, p.scene);
     } catch (const std::invalid_argument& e) {
       throw UsageError(std::string("--strategies: ") + e.what());
     }
@@ -188,7 +188,7 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
     try {
       const Scene scene =
           parse_scene(plan.scene_text, plan.origin, sweep_overrides(plan, c, seeds.front()));
-      for (const std::string& n : plan.strategies) make_strategy(n, scene);
+      for (const std::string& n : plan.strategies) validate_strategy_settings(n, scene);
     } catch (const SceneError& e) {
       throw UsageError("--vary " + describe_combination(plan, c) + ": " + e.what());
     } catch (const std::invalid_argument& e) {

@@ -23,7 +23,8 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
                     const EvaluationOptions& options) {
   auto strategy = make_strategy(strategy_name, scene);
   NearPlaneMetric near;
-  StrategyActivityMetric activity(scene.near_plane.depth_bits, scene.near_plane.ref_distance_m);
+  StrategyActivityMetric activity(scene.strategies.near_plane.depth_bits,
+                                  scene.strategies.near_plane.ref_distance_m);
   CostMetric cost;
   ExitMetric exits(scene.metrics);
   CameraTrack camera;
@@ -52,16 +53,17 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   s.dt_s = scene.sim.dt_s;
   s.fragments = scene.fragment_count();
   s.steps = totals.steps;
-  s.wall_s = totals.wall_s;
-  s.ode_messages = static_cast<int>(totals.ode_messages);
-  s.nonfinite_fragments = totals.nonfinite_fragments;
+  s.cost.wall_s = totals.wall_s;
+  s.health.ode_messages = static_cast<int>(totals.ode_messages);
+  s.health.nonfinite_fragments = totals.nonfinite_fragments;
   near.fill(s);
   activity.fill(s);
   cost.fill(s);
   exits.fill(s);
   vanished.fill(s, near);
   for (int i = 0; i < s.fragments; ++i) {
-    if (activity.was_capped(i) && (near.intersected(i) || near.camera_hit(i))) ++s.unsaved_by_cap;
+    if (activity.was_capped(i) && (near.intersected(i) || near.camera_hit(i)))
+      ++s.activity.unsaved_by_cap;
   }
   e.near_per_step = near.per_step();
   e.candidates_per_step = activity.candidates_per_step();
@@ -82,7 +84,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
 
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
                                 bool occlusion, RunObserver* extra, int jobs) {
-  for (const std::string& name : strategies) make_strategy(name, scene);  // validate all first
+  for (const std::string& name : strategies) validate_strategy_settings(name, scene);  // all first
   TrajectoryRecord reference;
   EvaluationOptions ref_opts;
   ref_opts.record = &reference;
@@ -123,8 +125,9 @@ std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& 
   auto key = [](const RunSummary& s) {
     // A fragment that vanishes fails the goals as one that is cut does: the thesis wants debris
     // to leave the picture, not to disappear from it.
-    return std::make_tuple(s.near_fragments + s.camera_hit_fragments + s.vanished_fragments,
-                           s.deviation_mean_m, -s.near_misses);
+    return std::make_tuple(s.intersections.near_fragments + s.intersections.camera_hit_fragments +
+                               s.intersections.vanished_fragments,
+                           s.deviation.mean_m, -s.intersections.near_misses);
   };
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].summary.strategy == "none") continue;
@@ -134,7 +137,7 @@ std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& 
 }
 
 bool z_fighting(const RunSummary& s, double ref_distance_m) {
-  return s.depth_step_m > 1e-3 * ref_distance_m;
+  return s.activity.depth_step_m > 1e-3 * ref_distance_m;
 }
 
 }  // namespace fragsim

@@ -84,8 +84,8 @@ std::string encode_evaluation(const Evaluation& e) {
   Writer w;
   const RunSummary& s = e.summary;
   w.put(summary_fields(s));
-  for (double d :
-       {s.physics_ms_median, s.physics_ms_p95, s.strategy_ms_median, s.strategy_ms_p95, s.wall_s}) {
+  for (double d : {s.cost.physics_ms_median, s.cost.physics_ms_p95, s.cost.strategy_ms_median,
+                   s.cost.strategy_ms_p95, s.cost.wall_s}) {
     w.put(d);
   }
   w.put<std::uint8_t>(e.has_deviation ? 1 : 0);
@@ -106,8 +106,8 @@ Evaluation decode_evaluation(const std::string& bytes) {
   std::vector<std::string> fields;
   r.get(fields);
   set_summary_fields(s, fields);
-  for (double* d : {&s.physics_ms_median, &s.physics_ms_p95, &s.strategy_ms_median,
-                    &s.strategy_ms_p95, &s.wall_s}) {
+  for (double* d : {&s.cost.physics_ms_median, &s.cost.physics_ms_p95, &s.cost.strategy_ms_median,
+                    &s.cost.strategy_ms_p95, &s.cost.wall_s}) {
     r.get(*d);
   }
   std::uint8_t dev = 0;

@@ -28,12 +28,12 @@ SuiteOutcome outcome_of(const RunSummary& s, std::size_t run, const std::string&
   SuiteOutcome o;
   o.run = run;
   o.variant = label;
-  o.near_fragments = s.near_fragments;
-  o.camera_hits = s.camera_hit_fragments;
-  o.vanished = s.vanished_fragments;
-  o.deviation_mean_m = s.deviation_mean_m;
-  o.near_misses = s.near_misses;
-  o.strategy_ms_median = s.strategy_ms_median;
+  o.near_fragments = s.intersections.near_fragments;
+  o.camera_hits = s.intersections.camera_hit_fragments;
+  o.vanished = s.intersections.vanished_fragments;
+  o.deviation_mean_m = s.deviation.mean_m;
+  o.near_misses = s.intersections.near_misses;
+  o.strategy_ms_median = s.cost.strategy_ms_median;
   return o;
 }
 
@@ -184,7 +184,7 @@ void validate_suite(const std::map<std::string, std::string>& scenes,
     if (!seen.insert({r.scene, r.distance_m, r.aim, r.toward_camera_mps, r.mode}).second) continue;
     for (const SuiteVariant& v : variants) {
       const Scene scene = variant_scene(scenes.at(r.scene), r, v);
-      make_strategy(v.strategy, scene);
+      validate_strategy_settings(v.strategy, scene);
     }
   }
 }
@@ -237,12 +237,12 @@ std::vector<SuiteOutcome> run_suite(const std::map<std::string, std::string>& sc
              run_suite_once(scenes.at(runs[i].scene), runs[i], i, variants)) {
           Evaluation& e = summaries.emplace_back();
           e.summary.strategy = o.variant;
-          e.summary.near_fragments = o.near_fragments;
-          e.summary.camera_hit_fragments = o.camera_hits;
-          e.summary.vanished_fragments = o.vanished;
-          e.summary.deviation_mean_m = o.deviation_mean_m;
-          e.summary.near_misses = o.near_misses;
-          e.summary.strategy_ms_median = o.strategy_ms_median;
+          e.summary.intersections.near_fragments = o.near_fragments;
+          e.summary.intersections.camera_hit_fragments = o.camera_hits;
+          e.summary.intersections.vanished_fragments = o.vanished;
+          e.summary.deviation.mean_m = o.deviation_mean_m;
+          e.summary.intersections.near_misses = o.near_misses;
+          e.summary.cost.strategy_ms_median = o.strategy_ms_median;
         }
         return encode_evaluations(summaries);
       },

@@ -61,8 +61,8 @@ void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measu
   if (first) {
     m.row.dt_s = scene.sim.dt_s;
     m.row.steps = totals.steps;
-    m.row.near_fragments = s.near_fragments;
-    m.row.camera_hit_fragments = s.camera_hit_fragments;
+    m.row.near_fragments = s.intersections.near_fragments;
+    m.row.camera_hit_fragments = s.intersections.camera_hit_fragments;
     m.row.candidates = candidates;
     m.row.predicted_contacts = probe.predicted_contacts();
     m.row.prediction_error_mean_m = probe.prediction_error_mean_m();
@@ -70,8 +70,8 @@ void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measu
     m.samples = probe.samples();
     m.ever_candidate = probe.ever_candidate();
     m.first_contact_s = probe.first_contact_s();
-  } else if (s.near_fragments != m.row.near_fragments ||
-             s.camera_hit_fragments != m.row.camera_hit_fragments ||
+  } else if (s.intersections.near_fragments != m.row.near_fragments ||
+             s.intersections.camera_hit_fragments != m.row.camera_hit_fragments ||
              candidates != m.row.candidates || probe.samples() != m.samples) {
     // Timing repeats must be the same run; a difference is a determinism bug, not noise.
     throw std::runtime_error("bench config '" + m.row.config.name +
@@ -185,7 +185,7 @@ std::vector<BenchRow> run_time_vs_error(const Scene& base, const std::vector<Ben
           "bench config '" + c.name + "': simulation.dt_s = " + format_double(s.sim.dt_s) +
           " does not divide the sample interval " + format_double(options.sample_dt_s) + " s");
     }
-    make_strategy(options.strategy, s);  // bad strategy parameters fail before anything runs
+    validate_strategy_settings(options.strategy, s);  // bad parameters fail before anything runs
     return s;
   };
   // Two configurations are the same simulation when their scenes agree once `auto` is replaced by

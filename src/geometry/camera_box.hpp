@@ -12,6 +12,7 @@
 
 namespace fragsim {
 
+// A fragment's box in camera coordinates (not a camera: the fragment as the camera sees it).
 struct CameraBox {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d dirs = Eigen::Matrix3d::Identity();     // the body axes (unit columns)

@@ -24,7 +24,7 @@ inline Eigen::Matrix3d body_to_camera(const CameraPose& camera, const Eigen::Mat
 
 // How far the hull reaches from its centre of mass along +x, +y, +z of the camera (plus_m) and
 // along -x, -y, -z (minus_m): its camera-aligned bounding box, exact (attained by a vertex), and
-// inside the one its body box gives.
+// inside the one its body box gives. (A fragment's extents, as CameraBox is its box.)
 struct CameraExtents {
   Eigen::Vector3d plus_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d minus_m = Eigen::Vector3d::Zero();

@@ -28,10 +28,10 @@ double CostMetric::quantile(std::vector<double> sample, double q) {
 }
 
 void CostMetric::fill(RunSummary& s) const {
-  s.physics_ms_median = 1e3 * quantile(physics_s_, 0.5);
-  s.physics_ms_p95 = 1e3 * quantile(physics_s_, 0.95);
-  s.strategy_ms_median = 1e3 * quantile(strategy_s_, 0.5);
-  s.strategy_ms_p95 = 1e3 * quantile(strategy_s_, 0.95);
+  s.cost.physics_ms_median = 1e3 * quantile(physics_s_, 0.5);
+  s.cost.physics_ms_p95 = 1e3 * quantile(physics_s_, 0.95);
+  s.cost.strategy_ms_median = 1e3 * quantile(strategy_s_, 0.5);
+  s.cost.strategy_ms_p95 = 1e3 * quantile(strategy_s_, 0.95);
 }
 
 }  // namespace fragsim

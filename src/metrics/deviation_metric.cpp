@@ -38,9 +38,7 @@ void DeviationMetric::compare(const StepSnapshot& snap) {
 
 void DeviationMetric::fill(RunSummary& s) const {
   if (largest_m_.empty()) {
-    s.deviation_mean_m = 0.0;
-    s.deviation_max_m = 0.0;
-    s.deviated_share = 0.0;
+    s.deviation = {};
     return;
   }
   double sum_m = 0.0;
@@ -52,9 +50,9 @@ void DeviationMetric::fill(RunSummary& s) const {
     if (d > threshold_m_) ++deviated;
   }
   const auto n = static_cast<double>(largest_m_.size());
-  s.deviation_mean_m = sum_m / n;
-  s.deviation_max_m = max_m;
-  s.deviated_share = deviated / n;
+  s.deviation.mean_m = sum_m / n;
+  s.deviation.max_m = max_m;
+  s.deviation.deviated_share = deviated / n;
 }
 
 }  // namespace fragsim

@@ -122,41 +122,31 @@ void ExitMetric::observe(const StepSnapshot& snap) {
 }
 
 void ExitMetric::fill(RunSummary& s) const {
-  s.exits_top = 0;
-  s.exits_bottom = 0;
-  s.exits_left = 0;
-  s.exits_right = 0;
-  s.exits_near = 0;
-  s.exits_stayed = 0;
-  s.near_misses = 0;
-  s.pushed_exits_top = 0;
-  s.pushed_exits_bottom = 0;
-  s.pushed_exits_left = 0;
-  s.pushed_exits_right = 0;
-  s.pushed_exits_near = 0;
-  s.pushed_exits_stayed = 0;
+  s.exits = {};
+  s.pushed_exits = {};
+  s.intersections.near_misses = 0;
   for (int f = 0; f < fragments(); ++f) {
     if (pushed(f)) {
       switch (exit(f)) {
         case Exit::kNone:
           break;
         case Exit::kTop:
-          ++s.pushed_exits_top;
+          ++s.pushed_exits.top;
           break;
         case Exit::kBottom:
-          ++s.pushed_exits_bottom;
+          ++s.pushed_exits.bottom;
           break;
         case Exit::kLeft:
-          ++s.pushed_exits_left;
+          ++s.pushed_exits.left;
           break;
         case Exit::kRight:
-          ++s.pushed_exits_right;
+          ++s.pushed_exits.right;
           break;
         case Exit::kNear:
-          ++s.pushed_exits_near;
+          ++s.pushed_exits.near;
           break;
         case Exit::kStayed:
-          ++s.pushed_exits_stayed;
+          ++s.pushed_exits.stayed;
           break;
       }
     }
@@ -164,25 +154,25 @@ void ExitMetric::fill(RunSummary& s) const {
       case Exit::kNone:
         break;
       case Exit::kTop:
-        ++s.exits_top;
+        ++s.exits.top;
         break;
       case Exit::kBottom:
-        ++s.exits_bottom;
+        ++s.exits.bottom;
         break;
       case Exit::kLeft:
-        ++s.exits_left;
+        ++s.exits.left;
         break;
       case Exit::kRight:
-        ++s.exits_right;
+        ++s.exits.right;
         break;
       case Exit::kNear:
-        ++s.exits_near;
+        ++s.exits.near;
         break;
       case Exit::kStayed:
-        ++s.exits_stayed;
+        ++s.exits.stayed;
         break;
     }
-    if (near_miss(f)) ++s.near_misses;
+    if (near_miss(f)) ++s.intersections.near_misses;
   }
 }
 

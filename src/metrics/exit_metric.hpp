@@ -1,6 +1,6 @@
 #pragma once
-// Exits and near misses (docs/method.md section 6). A fragment is on screen when its centre lies in the
-// view frustum of that snapshot's camera. When it goes from on screen to off screen between two
+// Exits and near misses (docs/method.md section 6). A fragment is on screen when its centre lies in
+// the view frustum of that snapshot's camera. When it goes from on screen to off screen between two
 // snapshots its exit is the near plane (its depth is now short of the near distance, or behind the
 // eye) or else the border its centre is furthest past; a later re-entry and exit replaces the
 // earlier one. A near miss is a centre path passing within near_miss_m of the eye by a fragment

@@ -54,9 +54,11 @@ void NearPlaneMetric::observe(const StepSnapshot& snap) {
 }
 
 void NearPlaneMetric::fill(RunSummary& s) const {
-  s.near_fragment_steps = fragment_steps_;
-  s.near_fragments = static_cast<int>(std::count(near_hit_.begin(), near_hit_.end(), 1));
-  s.camera_hit_fragments = static_cast<int>(std::count(body_hit_.begin(), body_hit_.end(), 1));
+  s.intersections.near_fragment_steps = fragment_steps_;
+  s.intersections.near_fragments =
+      static_cast<int>(std::count(near_hit_.begin(), near_hit_.end(), 1));
+  s.intersections.camera_hit_fragments =
+      static_cast<int>(std::count(body_hit_.begin(), body_hit_.end(), 1));
 }
 
 }  // namespace fragsim

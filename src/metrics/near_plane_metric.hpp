@@ -1,10 +1,10 @@
 #pragma once
-// Near-plane intersections and camera hits (docs/method.md section 6). A fragment intersects the near
-// plane in a step when its box (a convex piece: the polytope itself, swept_box.hpp's HullSweep)
-// meets the near rectangle at any time during the step's motion (swept_box.hpp), tested with that
-// step's near distance; a camera hit is a touch of the camera body, reported by the physics'
-// sensor or found by the same swept test (for a convex piece, with its hull's camera-aligned
-// box: conservative).
+// Near-plane intersections and camera hits (docs/method.md section 6). A fragment intersects the
+// near plane in a step when its box (a convex piece: the polytope itself, swept_box.hpp's
+// HullSweep) meets the near rectangle at any time during the step's motion (swept_box.hpp), tested
+// with that step's near distance; a camera hit is a touch of the camera body, reported by the
+// physics' sensor or found by the same swept test (for a convex piece, with its hull's
+// camera-aligned box: conservative).
 //
 // A frame with opacities (the `fade` strategy): a fragment invisible (opacity 0) at the start or
 // the end of the step in which it meets the near rectangle is drawn neither cut nor whole, so it

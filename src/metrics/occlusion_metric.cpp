@@ -336,11 +336,11 @@ void OcclusionMetric::fill(RunSummary& s) const {
   const auto max = [](const std::vector<double>& v) {
     return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
   };
-  s.occlusion_mean = mean(viewport_share_);
-  s.occlusion_max = max(viewport_share_);
-  s.central_occlusion_mean = mean(central_share_);
-  s.central_occlusion_max = max(central_share_);
-  s.single_fragment_occlusion_max = single_max_;
+  s.occlusion.mean = mean(viewport_share_);
+  s.occlusion.max = max(viewport_share_);
+  s.occlusion.central_mean = mean(central_share_);
+  s.occlusion.central_max = max(central_share_);
+  s.occlusion.single_fragment_max = single_max_;
 }
 
 }  // namespace fragsim

@@ -1,8 +1,8 @@
 #pragma once
-// Screen occlusion (docs/method.md section 6). After every step each fragment's box (or, for a convex
-// piece, its hull: the vertices and the points where its edges cross the plane) is clipped at the
-// near plane in force then, projected, and its 2-D convex hull rasterised on a pixel grid; the
-// covered share of the viewport and of a central region (where the action is) form per-step
+// Screen occlusion (docs/method.md section 6). After every step each fragment's box (or, for a
+// convex piece, its hull: the vertices and the points where its edges cross the plane) is clipped
+// at the near plane in force then, projected, and its 2-D convex hull rasterised on a pixel grid;
+// the covered share of the viewport and of a central region (where the action is) form per-step
 // series, summarised as mean and max over the run, with the largest share one fragment covered.
 //
 // Raster: grid_width_px columns and max(1, round(width / aspect)) rows; pixel (col, row) spans

@@ -34,21 +34,22 @@ void StrategyActivityMetric::observe(const StepSnapshot& snap) {
   }
 }
 
-void StrategyActivityMetric::fill(RunSummary& s) const {
-  s.candidates_initial = candidates_.empty() ? 0 : candidates_.front();
-  s.candidates_max =
+void StrategyActivityMetric::fill(RunSummary& summary) const {
+  ActivityTotals& a = summary.activity;
+  a.candidates_initial = candidates_.empty() ? 0 : candidates_.front();
+  a.candidates_max =
       candidates_.empty() ? 0 : *std::max_element(candidates_.begin(), candidates_.end());
-  s.candidate_steps = std::accumulate(candidates_.begin(), candidates_.end(), 0);
-  s.capped_forces = capped_;
-  s.guarded = guarded_;
-  s.deferred = deferred_;
-  s.forced_fragments = static_cast<int>(std::count(forced_.begin(), forced_.end(), 1));
-  s.impulse_Ns = impulse_Ns_;
-  s.max_accel_mps2 = max_accel_mps2_;
-  s.wall_contacts = wall_contacts_;
-  s.min_near_m = near_m_.empty() ? 0.0 : *std::min_element(near_m_.begin(), near_m_.end());
-  s.depth_step_m =
-      s.min_near_m > 0.0 ? depth_step_m(ref_distance_m_, s.min_near_m, depth_bits_) : 0.0;
+  a.candidate_steps = std::accumulate(candidates_.begin(), candidates_.end(), 0);
+  a.capped_forces = capped_;
+  a.guarded = guarded_;
+  a.deferred = deferred_;
+  a.forced_fragments = static_cast<int>(std::count(forced_.begin(), forced_.end(), 1));
+  a.impulse_Ns = impulse_Ns_;
+  a.max_accel_mps2 = max_accel_mps2_;
+  a.wall_contacts = wall_contacts_;
+  a.min_near_m = near_m_.empty() ? 0.0 : *std::min_element(near_m_.begin(), near_m_.end());
+  a.depth_step_m =
+      a.min_near_m > 0.0 ? depth_step_m(ref_distance_m_, a.min_near_m, depth_bits_) : 0.0;
 }
 
 }  // namespace fragsim

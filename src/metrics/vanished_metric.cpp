@@ -45,7 +45,7 @@ void VanishedMetric::fill(RunSummary& s, const NearPlaneMetric& near) const {
   for (std::size_t i = 0; i < faded_.size(); ++i) {
     if (faded_[i] || near.crossed_invisible(static_cast<int>(i))) ++count;
   }
-  s.vanished_fragments = count;
+  s.intersections.vanished_fragments = count;
 }
 
 }  // namespace fragsim

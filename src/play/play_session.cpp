@@ -114,8 +114,8 @@ class PlaySession::Flight {
     RunSummary counts;
     near_.fill(counts);
     hud_.t_s = snap.t_s;
-    hud_.near_fragments = counts.near_fragments;
-    hud_.camera_hits = counts.camera_hit_fragments;
+    hud_.near_fragments = counts.intersections.near_fragments;
+    hud_.camera_hits = counts.intersections.camera_hit_fragments;
     hud_.candidates = static_cast<int>(snap.candidates.size());
     hud_.strategy_ms = 1e3 * snap.strategy_s;
     hud_.message = s_.message_;
@@ -254,12 +254,14 @@ PlaySession::PlaySession(const Scene& scene, PlayOptions options, PlayFrontend& 
       frontend_(frontend),
       strategies_(strategy_names()),
       controls_(scene.camera, make_camera_motion(scene)->pose_at(0.0)) {
-  for (const std::string& name : strategies_) make_strategy(name, flight_scene_);
+  for (const std::string& name : strategies_) validate_strategy_settings(name, flight_scene_);
   current_ = strategies_.size();
   for (std::size_t i = 0; i < strategies_.size(); ++i) {
     if (strategies_[i] == options_.strategy) current_ = i;
   }
-  if (current_ == strategies_.size()) make_strategy(options_.strategy, flight_scene_);  // throws
+  if (current_ == strategies_.size()) {
+    validate_strategy_settings(options_.strategy, flight_scene_);  // throws
+  }
 }
 
 void PlaySession::run() {
@@ -290,8 +292,8 @@ void PlaySession::run() {
     report.strategy = name;
     report.steps = last.step;
     report.t_s = last.t_s;
-    report.near_fragments = counts.near_fragments;
-    report.camera_hits = counts.camera_hit_fragments;
+    report.near_fragments = counts.intersections.near_fragments;
+    report.camera_hits = counts.intersections.camera_hit_fragments;
     if (options_.record_flights && report.steps > 0) {
       report.recorded = record_paths(options_.record, ++recorded_, options_.record_folder);
       write_flight(*report.recorded, flight_scene_, name, camera.samples(), report.steps);

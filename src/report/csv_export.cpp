@@ -59,7 +59,7 @@ std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs)
   out += "z_fighting,ode_version\n";
   for (const Evaluation& e : runs) {
     for (const std::string& f : summary_fields(e.summary)) append(out, f, ",");
-    out += z_fighting(e.summary, scene.near_plane.ref_distance_m) ? "1" : "0";
+    out += z_fighting(e.summary, scene.strategies.near_plane.ref_distance_m) ? "1" : "0";
     append(out, ",", World::ode_version(), "\n");
   }
   return out;
@@ -75,7 +75,7 @@ std::vector<std::string> summary_csv_columns() {
 
 std::vector<std::string> summary_csv_cells(const Scene& scene, const RunSummary& summary) {
   std::vector<std::string> out = summary_fields(summary);
-  out.emplace_back(z_fighting(summary, scene.near_plane.ref_distance_m) ? "1" : "0");
+  out.emplace_back(z_fighting(summary, scene.strategies.near_plane.ref_distance_m) ? "1" : "0");
   out.push_back(World::ode_version());
   return out;
 }

@@ -69,7 +69,8 @@ bool has_occlusion(const Evaluation& e) {
 // The failures of the thesis's goals (best_for_thesis_goals): a fragment cut by the near plane,
 // one that hits the camera body and one that vanishes on screen (fade).
 int hits(const RunSummary& s) {
-  return s.near_fragments + s.camera_hit_fragments + s.vanished_fragments;
+  return s.intersections.near_fragments + s.intersections.camera_hit_fragments +
+         s.intersections.vanished_fragments;
 }
 
 // "a", "a and b", "a, b and c".
@@ -198,14 +199,14 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
       p = "Without control (none), no fragment met the near plane or the camera body on this "
           "scene.";
     } else {
-      p = "Without control (none), " + count(s.near_fragments, "fragment", "fragments") +
-          " met the near plane (" +
-          count(s.near_fragment_steps, "fragment-step", "fragment-steps") + ") and " +
-          std::to_string(s.camera_hit_fragments) + " hit the camera body.";
+      p = "Without control (none), " +
+          count(s.intersections.near_fragments, "fragment", "fragments") + " met the near plane (" +
+          count(s.intersections.near_fragment_steps, "fragment-step", "fragment-steps") + ") and " +
+          std::to_string(s.intersections.camera_hit_fragments) + " hit the camera body.";
     }
     if (has_occlusion(*none)) {
-      p += " The debris covered up to " + percent(s.occlusion_max) + "% of the screen and " +
-           percent(s.central_occlusion_max) + "% of its central region.";
+      p += " The debris covered up to " + percent(s.occlusion.max) + "% of the screen and " +
+           percent(s.occlusion.central_max) + "% of its central region.";
     }
     paragraphs.push_back(p);
   } else {
@@ -228,12 +229,13 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
         "camera hits and no fragment vanishing on screen): each let fragments through or made "
         "them disappear. The closest, " +
         s.strategy + ": " +
-        count(s.near_fragments, "near-plane intersection", "near-plane intersections") + ", " +
-        count(s.camera_hit_fragments, "camera hit", "camera hits");
-    if (s.vanished_fragments > 0) {
-      p += ", " + count(s.vanished_fragments, "fragment", "fragments") + " vanished";
+        count(s.intersections.near_fragments, "near-plane intersection",
+              "near-plane intersections") +
+        ", " + count(s.intersections.camera_hit_fragments, "camera hit", "camera hits");
+    if (s.intersections.vanished_fragments > 0) {
+      p += ", " + count(s.intersections.vanished_fragments, "fragment", "fragments") + " vanished";
     }
-    if (b.has_deviation) p += ", mean deviation " + fixed_text(s.deviation_mean_m, 3) + " m";
+    if (b.has_deviation) p += ", mean deviation " + fixed_text(s.deviation.mean_m, 3) + " m";
     paragraphs.push_back(p + ".");
     return paragraphs;
   }
@@ -245,21 +247,22 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
                            "hits or vanished fragments, then the least deviation)") +
                   ": 0 near-plane intersections, 0 camera hits";
   if (b.has_deviation) {
-    p += ", mean deviation " + fixed_text(s.deviation_mean_m, 3) + " m (" +
-         percent(s.deviated_share) + "% of the fragments moved more than 1 cm, the most by " +
-         fixed_text(s.deviation_max_m, 3) + " m)";
+    p += ", mean deviation " + fixed_text(s.deviation.mean_m, 3) + " m (" +
+         percent(s.deviation.deviated_share) +
+         "% of the fragments moved more than 1 cm, the most by " +
+         fixed_text(s.deviation.max_m, 3) + " m)";
   }
-  p += ", " + count(s.near_misses, "near miss", "near misses") + ".";
+  p += ", " + count(s.intersections.near_misses, "near miss", "near misses") + ".";
   if (has_occlusion(b)) {
-    p += " Occlusion of the central region: up to " + percent(s.central_occlusion_max) +
-         "% (mean " + percent(s.central_occlusion_mean) + "%)";
+    p += " Occlusion of the central region: up to " + percent(s.occlusion.central_max) +
+         "% (mean " + percent(s.occlusion.central_mean) + "%)";
     if (none && has_occlusion(*none)) {
-      p += " against " + percent(none->summary.central_occlusion_max) + "% (mean " +
-           percent(none->summary.central_occlusion_mean) + "%) without control";
+      p += " against " + percent(none->summary.occlusion.central_max) + "% (mean " +
+           percent(none->summary.occlusion.central_mean) + "%) without control";
     }
-    p += "; of the whole screen, mean " + percent(s.occlusion_mean) + "%";
+    p += "; of the whole screen, mean " + percent(s.occlusion.mean) + "%";
     if (none && has_occlusion(*none)) {
-      p += " against " + percent(none->summary.occlusion_mean) + "%";
+      p += " against " + percent(none->summary.occlusion.mean) + "%";
     }
     p += ".";
   } else {
@@ -273,7 +276,7 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
     if (i == *best || o.strategy == "none" || hits(o) > 0) continue;
     also.push_back(o.strategy +
                    (runs[i].has_deviation
-                        ? " (mean deviation " + fixed_text(o.deviation_mean_m, 3) + " m)"
+                        ? " (mean deviation " + fixed_text(o.deviation.mean_m, 3) + " m)"
                         : std::string()));
   }
   if (!also.empty()) {
@@ -283,16 +286,18 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   // A run that hides debris instead of steering it: what it saves at the lens and what it costs.
   for (const Evaluation& e : runs) {
     const RunSummary& o = e.summary;
-    if (o.vanished_fragments == 0) continue;
-    std::string v = o.strategy + " made " + count(o.vanished_fragments, "fragment", "fragments") +
-                    " vanish in view (faded below half opacity, or invisible at the near plane), "
-                    "the debris that \"suddenly disappears\" the thesis sets out to avoid: it "
-                    "counts as a failure of the goals, as a cut does. It left " +
-                    count(o.near_fragments, "near-plane intersection", "near-plane intersections") +
-                    " and " + count(o.camera_hit_fragments, "camera hit", "camera hits");
+    if (o.intersections.vanished_fragments == 0) continue;
+    std::string v =
+        o.strategy + " made " + count(o.intersections.vanished_fragments, "fragment", "fragments") +
+        " vanish in view (faded below half opacity, or invisible at the near plane), "
+        "the debris that \"suddenly disappears\" the thesis sets out to avoid: it "
+        "counts as a failure of the goals, as a cut does. It left " +
+        count(o.intersections.near_fragments, "near-plane intersection",
+              "near-plane intersections") +
+        " and " + count(o.intersections.camera_hit_fragments, "camera hit", "camera hits");
     if (has_occlusion(e)) {
-      v += "; central occlusion up to " + percent(o.central_occlusion_max) + "% (mean " +
-           percent(o.central_occlusion_mean) + "%), faded fragments counted by their opacity";
+      v += "; central occlusion up to " + percent(o.occlusion.central_max) + "% (mean " +
+           percent(o.occlusion.central_mean) + "%), faded fragments counted by their opacity";
     }
     paragraphs.push_back(v + ".");
   }

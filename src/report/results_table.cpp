@@ -36,47 +36,54 @@ Cell text_cell(std::string RunSummary::*field) {
   return [field](const Evaluation& e) { return e.summary.*field; };
 }
 
-Cell count_cell(int RunSummary::*field) {
-  return [field](const Evaluation& e) { return std::to_string(e.summary.*field); };
+// A number held in one part of the summary (a member of a member of RunSummary).
+template <class Part>
+Cell count_cell(Part RunSummary::*part, int Part::*field) {
+  return [part, field](const Evaluation& e) { return std::to_string(e.summary.*part.*field); };
 }
 
-Cell fixed_cell(double RunSummary::*field, int decimals) {
-  return [field, decimals](const Evaluation& e) { return fixed_text(e.summary.*field, decimals); };
+template <class Part>
+Cell fixed_cell(Part RunSummary::*part, double Part::*field, int decimals) {
+  return [part, field, decimals](const Evaluation& e) {
+    return fixed_text(e.summary.*part.*field, decimals);
+  };
 }
 
 // Deviation is measured against the `none` run: a run without it shows a dash, not a zero.
-Cell deviation_cell(double RunSummary::*field, int decimals, bool percent) {
+Cell deviation_cell(double DeviationStats::*field, int decimals, bool percent) {
   return [field, decimals, percent](const Evaluation& e) {
     if (!e.has_deviation) return std::string("-");
-    const double v = e.summary.*field;
+    const double v = e.summary.deviation.*field;
     return percent ? percent_text(v, decimals) : fixed_text(v, decimals);
   };
 }
 
 // --no-occlusion leaves the occlusion fields at zero: a dash says "not measured", 0.0 would
 // claim a clear screen.
-Cell occlusion_cell(double RunSummary::*field) {
+Cell occlusion_cell(double OcclusionStats::*field) {
   return [field](const Evaluation& e) {
-    return e.occlusion_per_step.empty() ? std::string("-") : percent_text(e.summary.*field, 1);
+    return e.occlusion_per_step.empty() ? std::string("-")
+                                        : percent_text(e.summary.occlusion.*field, 1);
   };
 }
 
 std::string exits_text(const RunSummary& s) {
-  return std::to_string(s.exits_top) + "/" + std::to_string(s.exits_bottom) + "/" +
-         std::to_string(s.exits_left) + "/" + std::to_string(s.exits_right) + "/" +
-         std::to_string(s.exits_near) + "/" + std::to_string(s.exits_stayed);
+  return std::to_string(s.exits.top) + "/" + std::to_string(s.exits.bottom) + "/" +
+         std::to_string(s.exits.left) + "/" + std::to_string(s.exits.right) + "/" +
+         std::to_string(s.exits.near) + "/" + std::to_string(s.exits.stayed);
 }
 
 std::string pushed_exits_text(const RunSummary& s) {
-  if (s.forced_fragments == 0) return "-";
-  return std::to_string(s.pushed_exits_top) + "/" + std::to_string(s.pushed_exits_bottom) + "/" +
-         std::to_string(s.pushed_exits_left) + "/" + std::to_string(s.pushed_exits_right) + "/" +
-         std::to_string(s.pushed_exits_near) + "/" + std::to_string(s.pushed_exits_stayed);
+  if (s.activity.forced_fragments == 0) return "-";
+  return std::to_string(s.pushed_exits.top) + "/" + std::to_string(s.pushed_exits.bottom) + "/" +
+         std::to_string(s.pushed_exits.left) + "/" + std::to_string(s.pushed_exits.right) + "/" +
+         std::to_string(s.pushed_exits.near) + "/" + std::to_string(s.pushed_exits.stayed);
 }
 
 // The failures of the thesis's goals: cut, hit or vanished (best_for_thesis_goals).
 int hits(const RunSummary& s) {
-  return s.near_fragments + s.camera_hit_fragments + s.vanished_fragments;
+  return s.intersections.near_fragments + s.intersections.camera_hit_fragments +
+         s.intersections.vanished_fragments;
 }
 
 std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluation>& runs) {
@@ -85,29 +92,32 @@ std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluat
     const RunSummary& s = e.summary;
     // min_near_m is 0 when nothing was recorded; below the camera's near distance the run moved
     // the near plane, and what that costs is the depth resolution.
-    if (s.min_near_m > 0.0 && s.min_near_m < scene.camera.near_m) {
-      const double ref_m = scene.near_plane.ref_distance_m;
-      notes.push_back({s.strategy + ": near distance down to " + fixed_text(s.min_near_m, 3) +
-                       " m, depth step at " + fixed_text(ref_m, 1) +
-                       " m: " + fixed_text(1e3 * s.depth_step_m, 3) + " mm" +
+    if (s.activity.min_near_m > 0.0 && s.activity.min_near_m < scene.camera.near_m) {
+      const double ref_m = scene.strategies.near_plane.ref_distance_m;
+      notes.push_back({s.strategy + ": near distance down to " +
+                       fixed_text(s.activity.min_near_m, 3) + " m, depth step at " +
+                       fixed_text(ref_m, 1) +
+                       " m: " + fixed_text(1e3 * s.activity.depth_step_m, 3) + " mm" +
                        (z_fighting(s, ref_m) ? " (z-fighting)" : "")});
     }
-    if (s.wall_contacts > 0) {
-      notes.push_back(
-          {s.strategy + ": " + std::to_string(s.wall_contacts) + " contact points with the wall"});
+    if (s.activity.wall_contacts > 0) {
+      notes.push_back({s.strategy + ": " + std::to_string(s.activity.wall_contacts) +
+                       " contact points with the wall"});
     }
   }
   std::string cost = "cost per step, median / p95:";
   for (const Evaluation& e : runs) {
     const RunSummary& s = e.summary;
     cost += (&e == &runs.front() ? " " : "; ") + s.strategy + " " +
-            fixed_text(s.physics_ms_median, 2) + "/" + fixed_text(s.physics_ms_p95, 2) + " + " +
-            fixed_text(s.strategy_ms_median, 2) + "/" + fixed_text(s.strategy_ms_p95, 2) + " ms";
+            fixed_text(s.cost.physics_ms_median, 2) + "/" + fixed_text(s.cost.physics_ms_p95, 2) +
+            " + " + fixed_text(s.cost.strategy_ms_median, 2) + "/" +
+            fixed_text(s.cost.strategy_ms_p95, 2) + " ms";
   }
   notes.push_back({cost + " (physics + strategy)", true});
   for (const Evaluation& e : runs) {
-    if (e.summary.unsaved_by_cap > 0) {
-      notes.push_back({e.summary.strategy + ": " + std::to_string(e.summary.unsaved_by_cap) +
+    if (e.summary.activity.unsaved_by_cap > 0) {
+      notes.push_back({e.summary.strategy + ": " +
+                       std::to_string(e.summary.activity.unsaved_by_cap) +
                        " fragments the acceleration cap left unsaved (capped and still "
                        "intersecting)"});
     }
@@ -123,11 +133,12 @@ std::string verdict(const std::vector<Evaluation>& runs, std::optional<std::size
          "deviation, then most near misses): " +
          s.strategy + " (" +
          (n == 0 ? "no intersections"
-                 : std::to_string(n) + (s.vanished_fragments > 0 ? " intersections or vanished"
-                                                                 : " intersections")) +
-         (runs[*best].has_deviation ? ", mean deviation " + fixed_text(s.deviation_mean_m, 4) + " m"
+                 : std::to_string(n) + (s.intersections.vanished_fragments > 0
+                                            ? " intersections or vanished"
+                                            : " intersections")) +
+         (runs[*best].has_deviation ? ", mean deviation " + fixed_text(s.deviation.mean_m, 4) + " m"
                                     : std::string()) +
-         ", " + std::to_string(s.near_misses) + " near misses)";
+         ", " + std::to_string(s.intersections.near_misses) + " near misses)";
 }
 
 std::string csv_field(const std::string& text) {
@@ -182,54 +193,54 @@ std::vector<ResultsColumn> results_columns(double near_miss_m) {
        .legend_key = "near",
        .legend = "fragments meeting the near rectangle (swept)",
        .legend_break = B::comma,
-       .cell = count_cell(&RunSummary::near_fragments)},
+       .cell = count_cell(&RunSummary::intersections, &IntersectionCounts::near_fragments)},
       {.header = "near_st",
        .explanation = "fragment-steps meeting the near rectangle",
        .legend_key = "near_st",
        .legend = "fragment-steps",
        .legend_break = B::comma,
-       .cell = count_cell(&RunSummary::near_fragment_steps)},
+       .cell = count_cell(&RunSummary::intersections, &IntersectionCounts::near_fragment_steps)},
       {.header = "cam",
        .explanation = "fragments touching the camera body",
        .legend_key = "cam",
        .legend = "camera-body hits",
        .legend_break = B::comma,
-       .cell = count_cell(&RunSummary::camera_hit_fragments)},
+       .cell = count_cell(&RunSummary::intersections, &IntersectionCounts::camera_hit_fragments)},
       {.header = "vanished",
        .explanation = "fragments that faded below half opacity in view or met the near plane "
                       "invisible (fade); a failure of the thesis's goals, as a cut is",
        .legend_key = "vanished",
        .legend = "fragments faded out in view (`fade`)",
        .legend_break = B::line,
-       .cell = count_cell(&RunSummary::vanished_fragments)},
+       .cell = count_cell(&RunSummary::intersections, &IntersectionCounts::vanished_fragments)},
       {.header = "dev_mean",
        .unit = "m",
        .explanation = "mean over fragments of the largest distance from the none run",
        .legend_key = "dev",
        .legend = "deviation from the `none` run",
-       .cell = deviation_cell(&RunSummary::deviation_mean_m, 4, false)},
+       .cell = deviation_cell(&DeviationStats::mean_m, 4, false)},
       {.header = "dev_max",
        .unit = "m",
        .explanation = "largest deviation of any fragment",
-       .cell = deviation_cell(&RunSummary::deviation_max_m, 3, false)},
+       .cell = deviation_cell(&DeviationStats::max_m, 3, false)},
       {.header = "dev>1cm",
        .unit = "%",
        .explanation = "share of fragments moved more than 1 cm",
-       .cell = deviation_cell(&RunSummary::deviated_share, 1, true)},
+       .cell = deviation_cell(&DeviationStats::deviated_share, 1, true)},
       {.header = "occ_mean",
        .unit = "%",
        .explanation = "mean share of the screen covered",
        .legend_key = "occ/ctr",
        .legend = "screen and central share covered",
-       .cell = occlusion_cell(&RunSummary::occlusion_mean)},
+       .cell = occlusion_cell(&OcclusionStats::mean)},
       {.header = "occ_max",
        .unit = "%",
        .explanation = "largest share of the screen covered",
-       .cell = occlusion_cell(&RunSummary::occlusion_max)},
+       .cell = occlusion_cell(&OcclusionStats::max)},
       {.header = "ctr_max",
        .unit = "%",
        .explanation = "largest share of the central region covered",
-       .cell = occlusion_cell(&RunSummary::central_occlusion_max)},
+       .cell = occlusion_cell(&OcclusionStats::central_max)},
       {.header = "exits",
        .parts = "T/B/L/R/N/S",
        .explanation = "how fragments left the screen: top/bottom/left/right/near/stayed",
@@ -248,37 +259,37 @@ std::vector<ResultsColumn> results_columns(double near_miss_m) {
        .explanation = "near misses: passed close to the eye without touching",
        .legend_key = "miss",
        .legend = miss,
-       .cell = count_cell(&RunSummary::near_misses)},
+       .cell = count_cell(&RunSummary::intersections, &IntersectionCounts::near_misses)},
       {.header = "cand0",
        .explanation = "edge candidates at t = 0",
        .legend_key = "cand0",
        .legend = "edge candidates at t = 0",
-       .cell = count_cell(&RunSummary::candidates_initial)},
+       .cell = count_cell(&RunSummary::activity, &ActivityTotals::candidates_initial)},
       {.header = "impulse",
        .unit = "N s",
        .explanation = "total impulse applied",
-       .cell = fixed_cell(&RunSummary::impulse_Ns, 2)},
+       .cell = fixed_cell(&RunSummary::activity, &ActivityTotals::impulse_Ns, 2)},
       {.header = "capped",
        .explanation = "force-steps cut by the acceleration cap",
        .legend_key = "capped",
        .legend = "forces cut by a_max",
-       .cell = count_cell(&RunSummary::capped_forces)},
+       .cell = count_cell(&RunSummary::activity, &ActivityTotals::capped_forces)},
       {.header = "near_min",
        .unit = "m",
        .explanation = "smallest near distance used",
-       .cell = fixed_cell(&RunSummary::min_near_m, 3)},
+       .cell = fixed_cell(&RunSummary::activity, &ActivityTotals::min_near_m, 3)},
       {.header = "phys",
        .unit = "ms",
        .explanation = "median wall-clock time of a physics step",
        .legend_key = "phys/strat",
        .legend = "median per step",
        .timing = true,
-       .cell = fixed_cell(&RunSummary::physics_ms_median, 3)},
+       .cell = fixed_cell(&RunSummary::cost, &RunCost::physics_ms_median, 3)},
       {.header = "strat",
        .unit = "ms",
        .explanation = "median wall-clock time of the strategy in a step",
        .timing = true,
-       .cell = fixed_cell(&RunSummary::strategy_ms_median, 3)},
+       .cell = fixed_cell(&RunSummary::cost, &RunCost::strategy_ms_median, 3)},
   };
 }
 

@@ -23,7 +23,8 @@ class CameraMotion {
 
 // The camera's limits as the scene declares them, for the strategies (StepContext's rule). V_c
 // always; acceleration and turn rate only for a player (its acceleration may be +infinity: instant
-// turns); 0, "not declared", for a path or a track, which may start, stop and turn at once.
+// turns); 0, "not declared", for a path or a track, which may start, stop and turn at once. They
+// reach a strategy as StepContext's camera_max_* (a game's as fragsim_camera's max_*).
 struct CameraLimits {
   double max_speed_mps = 0.0;
   double max_accel_mps2 = 0.0;

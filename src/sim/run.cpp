@@ -160,10 +160,10 @@ void Run::step() {
   snap_.camera_velocity_mps = camera_.velocity_at(t_next);
   snap_.fragments = states_;
   snap_.forces = out_.forces;
-  snap_.candidates = out_.candidates;
-  snap_.capped = out_.capped;
-  snap_.guarded = out_.guarded;
-  snap_.deferred = out_.deferred;
+  snap_.candidates = out_.activity.candidates;
+  snap_.capped = out_.activity.capped;
+  snap_.guarded = out_.activity.guarded;
+  snap_.deferred = out_.activity.deferred;
   snap_.opacity = out_.opacity;
   snap_.camera_hits = world_.camera_hits();
   snap_.wall_contacts = world_.wall_contacts();

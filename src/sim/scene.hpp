@@ -31,7 +31,7 @@ struct SimulationDef {
   int solver_iterations = 20;  // dWorldQuickStep iterations
 
   // Skipping work a scene does not need. Both are off by default: they change results by a
-  // little (data/scenes/README.md gives the measured differences), and the pinned default
+  // little (docs/benchmarks.md gives the measured differences), and the pinned default
   // results are made without them.
   // ODE's auto-disable: a fragment at rest stops being stepped (its geom still collides, so the
   // camera's sensor still sees it) until something touches it or a strategy pushes it.
@@ -110,6 +110,8 @@ enum class CameraMode {
   kPlayer,  // a seeded model of a person with a gamepad
 };
 
+// The scene's camera: how it moves (mode, path, track, player model), its frustum, body and
+// speed. Each step's CameraPose is made from it; CameraLimits are what it declares to strategies.
 struct CameraDef {
   CameraMode mode = CameraMode::kPath;
   // path: the camera moves along these points at speed_mps from t = 0 and stops at the last one.
@@ -135,11 +137,13 @@ struct CameraDef {
   double player_accel_mps2 = 20.0;
   double turn_rate_degps = 90.0;
   double player_look_radius_m = 1.0;
-  double fovy_deg = 60.0;
-  double aspect = 16.0 / 9.0;
-  double near_m = 0.1;
-  double far_m = 500.0;
+  double fovy_deg = kDefaultFrustum.fovy_deg;
+  double aspect = kDefaultFrustum.aspect;
+  double near_m = kDefaultFrustum.near_m;
+  double far_m = kDefaultFrustum.far_m;
   Eigen::Vector3d body_size_m{0.3, 0.2, 0.3};  // the camera's body, a box centred on the eye
+
+  FrustumDef frustum_def() const { return {fovy_deg, aspect, near_m, far_m}; }
 };
 
 // Settings of the metrics (they observe a run and never change it).
@@ -150,15 +154,15 @@ struct MetricsDef {
   double deviation_threshold_m = 0.01;  // a fragment moved more than this "deviated"
 };
 
-// A scene is also every strategy's settings (scene.edge.k): the strategies' sections of a scene
-// file are theirs.
-struct Scene : StrategySettings {
+struct Scene {
   std::string name = "unnamed";
   SimulationDef sim;
   ObjectDef object;
   ExplosionDef explosion;
   GroundDef ground;
   CameraDef camera;
+  // Every strategy's parameters (scene.strategies.edge.k): a scene file's strategy sections.
+  StrategySettings strategies;
   MetricsDef metrics;
 
   int fragment_count() const;

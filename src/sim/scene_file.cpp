@@ -247,11 +247,11 @@ std::vector<KeySpec> make_keys(const StrategyTable& table) {
   std::vector<KeySpec> t = keys_before_strategies();
   for (const StrategyEntry& e : table) {
     for (const auto& k : e.keys) {
-      // The strategies' keys are kept on their settings; a scene is those settings too.
+      // The strategies' keys are kept on the scene's strategy settings.
       t.push_back({k.name, k.help,
-                   [parse = k.parse](Scene& s, const std::string& v) { parse(s, v); },
-                   [format = k.format](const Scene& s) { return format(s); },
-                   [broken = k.broken](const Scene& s) { return broken(s); }});
+                   [parse = k.parse](Scene& s, const std::string& v) { parse(s.strategies, v); },
+                   [format = k.format](const Scene& s) { return format(s.strategies); },
+                   [broken = k.broken](const Scene& s) { return broken(s.strategies); }});
     }
   }
   for (KeySpec& k : keys_after_strategies()) t.push_back(std::move(k));
@@ -505,7 +505,7 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
   // Each strategy's rules across its keys (or with the camera), where it declares them.
   for (const StrategyEntry& e : table) {
     try {
-      e.check_across(s, strategy_camera(s));
+      e.check_across(s.strategies, s.camera.frustum_def());
     } catch (const InputError& x) {
       fail(x.what());
     }

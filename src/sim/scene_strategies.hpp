@@ -10,14 +10,16 @@
 
 namespace fragsim {
 
-inline StrategyCamera strategy_camera(const Scene& scene) {
-  return {scene.camera.fovy_deg, scene.camera.aspect, scene.camera.near_m};
+// Whether the named strategy can be made from the scene's section of the same name, without
+// making it. Throws InputError, as make_strategy would.
+inline void validate_strategy_settings(std::string_view name, const Scene& scene) {
+  validate_strategy_settings(name, scene.strategies, scene.camera.frustum_def());
 }
 
 // The named strategy with its parameters taken from the scene's section of the same name.
 // Throws InputError.
 inline std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scene) {
-  return make_strategy(name, scene, strategy_camera(scene));
+  return make_strategy(name, scene.strategies, scene.camera.frustum_def());
 }
 
 }  // namespace fragsim

@@ -10,7 +10,7 @@ const ParamSpec<FadeParams>& fade_param_spec() {
             open_closed(0, 1e6)),
        real("end_m", "m", "a fragment this close to the eye or closer is invisible", &P::end_m,
             closed(0, 1e6))},
-      [](const P& p, const StrategyCamera&) {
+      [](const P& p, const FrustumDef&) {
         // The fade runs from opaque at start_m down to invisible at end_m, nearer the eye.
         if (!(p.end_m < p.start_m)) {
           throw InputError(

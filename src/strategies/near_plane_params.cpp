@@ -13,7 +13,7 @@ const ParamSpec<NearPlaneParams>& near_plane_param_spec() {
        integer("depth_bits", "", "bits of the depth buffer", &P::depth_bits, 8, 32),
        real("ref_distance_m", "m", "distance at which the depth step is reported",
             &P::ref_distance_m, open_closed(0, 1e7))},
-      [](const P& p, const StrategyCamera& camera) {
+      [](const P& p, const FrustumDef& camera) {
         // The strategy only ever pulls the near plane in, never pushes it out.
         if (p.min_near_m > camera.near_m) {
           throw InputError(

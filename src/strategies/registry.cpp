@@ -25,7 +25,7 @@ const ParamSpec<NoParams>& no_params() {
 
 const StrategyTable& strategy_table() {
   using S = StrategySettings;
-  using C = StrategyCamera;
+  using C = FrustumDef;
   static const StrategyTable table{
       strategy_entry("none", "no control; the reference run for deviation", no_params(),
                      [](const NoParams&, const C&) { return std::make_unique<NoneStrategy>(); }),
@@ -128,14 +128,29 @@ const StrategyEntry* find_strategy(std::string_view name, const StrategyTable& t
   return nullptr;
 }
 
-std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
-                                        const StrategyCamera& camera, const StrategyTable& table) {
+namespace {
+
+// The named entry, its parameters checked; throws InputError.
+const StrategyEntry& checked_entry(std::string_view name, const StrategySettings& settings,
+                                   const FrustumDef& camera, const StrategyTable& table) {
   if (const StrategyEntry* e = find_strategy(name, table)) {
     e->check(settings, camera);
-    return e->make(settings, camera);
+    return *e;
   }
   throw InputError("unknown strategy '" + std::string(name) +
                    "' (known: " + join_strategy_names(table, ", ") + ")");
+}
+
+}  // namespace
+
+void validate_strategy_settings(std::string_view name, const StrategySettings& settings,
+                                const FrustumDef& camera, const StrategyTable& table) {
+  checked_entry(name, settings, camera, table);
+}
+
+std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
+                                        const FrustumDef& camera, const StrategyTable& table) {
+  return checked_entry(name, settings, camera, table).make(settings, camera);
 }
 
 }  // namespace fragsim

@@ -23,10 +23,10 @@ struct StrategyEntry {
   std::string description;                // one line for --help
   settings::Keys<StrategySettings> keys;  // named "section.key"
   // The keys' rules on the values held (set in code or parsed), then the rules across keys.
-  std::function<void(const StrategySettings&, const StrategyCamera&)> check;
+  std::function<void(const StrategySettings&, const FrustumDef&)> check;
   // Only the rules across keys: the parser has already checked each value against its key.
-  std::function<void(const StrategySettings&, const StrategyCamera&)> check_across;
-  std::function<std::unique_ptr<Strategy>(const StrategySettings&, const StrategyCamera&)> make;
+  std::function<void(const StrategySettings&, const FrustumDef&)> check_across;
+  std::function<std::unique_ptr<Strategy>(const StrategySettings&, const FrustumDef&)> make;
   std::vector<TuningVariant> tuning;  // what the time-against-error bench tries (ParamSpec)
 };
 
@@ -54,15 +54,15 @@ StrategyEntry strategy_entry(std::string name, std::string description,
           return get_mut(s);
         }
       });
-  e.check_across = [get, rules = spec.rules](const StrategySettings& s, const StrategyCamera& c) {
+  e.check_across = [get, rules = spec.rules](const StrategySettings& s, const FrustumDef& c) {
     if (rules) rules(get(s), c);
   };
   e.check = [keys = e.keys, across = e.check_across](const StrategySettings& s,
-                                                     const StrategyCamera& c) {
+                                                     const FrustumDef& c) {
     settings::check(keys, s);
     across(s, c);
   };
-  e.make = [get, make](const StrategySettings& s, const StrategyCamera& c) {
+  e.make = [get, make](const StrategySettings& s, const FrustumDef& c) {
     return std::unique_ptr<Strategy>(make(get(s), c));
   };
   e.tuning = spec.tuning;
@@ -87,10 +87,16 @@ std::string describe_strategies(const StrategyTable& table);
 const StrategyEntry* find_strategy(std::string_view name,
                                    const StrategyTable& table = strategy_table());
 
-// The named strategy, its parameters checked first. Throws InputError naming the strategy
-// (unknown name) or the parameter and its value.
+// Whether the named strategy can be made with these parameters, without making it: its keys'
+// rules on the values held, then its rules across keys and with the frustum. Throws InputError
+// naming the strategy (unknown name) or the parameter and its value, one line.
+void validate_strategy_settings(std::string_view name, const StrategySettings& settings,
+                                const FrustumDef& camera,
+                                const StrategyTable& table = strategy_table());
+
+// The named strategy, validated first (validate_strategy_settings, the same errors).
 std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
-                                        const StrategyCamera& camera,
+                                        const FrustumDef& camera,
                                         const StrategyTable& table = strategy_table());
 
 }  // namespace fragsim

@@ -1,7 +1,7 @@
 #pragma once
 // Every strategy's parameters, as a scene holds them. The built-in strategies' have a member
-// each, because the tool's code and tests set them by name (scene.edge.k); any other strategy's
-// live in a store by type, so adding a strategy does not touch this file.
+// each, because the tool's code and tests set them by name (scene.strategies.edge.k); any other
+// strategy's live in a store by type, so adding a strategy does not touch this file.
 
 #include <any>
 #include <map>

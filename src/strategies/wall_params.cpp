@@ -11,7 +11,7 @@ const ParamSpec<WallParams>& wall_param_spec() {
        real("thickness_m", "m", "depth of the wall box", &P::thickness_m, open_closed(0, 100)),
        real("margin", "", "wall size over the frustum's cross-section", &P::margin, closed(1, 100)),
        real("restitution", "", "bounce off the wall, 0 to 1", &P::restitution, closed(0, 1))},
-      [](const P& p, const StrategyCamera&) {
+      [](const P& p, const FrustumDef&) {
         // A thicker box would reach behind the eye and enclose the camera.
         if (p.thickness_m >= 2.0 * p.distance_m) {
           throw InputError(bad_value_message(

@@ -19,11 +19,12 @@ TEST(EndToEnd, FrontSceneHasIntersectionsWithoutControlAndFewerWithEdge) {
   const RunSummary none = evaluate(scene, "none").summary;
   const RunSummary edge = evaluate(scene, "edge").summary;
   // The bar for the default scene: at least 20 fragments reach the near plane or camera.
-  EXPECT_GE(std::max(none.near_fragments, none.camera_hit_fragments), 20);
-  EXPECT_LT(edge.near_fragments, none.near_fragments);
-  EXPECT_LT(edge.camera_hit_fragments, none.camera_hit_fragments);
-  EXPECT_GT(edge.candidates_initial, 0);
-  EXPECT_EQ(none.candidates_initial, 0);
+  EXPECT_GE(std::max(none.intersections.near_fragments, none.intersections.camera_hit_fragments),
+            20);
+  EXPECT_LT(edge.intersections.near_fragments, none.intersections.near_fragments);
+  EXPECT_LT(edge.intersections.camera_hit_fragments, none.intersections.camera_hit_fragments);
+  EXPECT_GT(edge.activity.candidates_initial, 0);
+  EXPECT_EQ(none.activity.candidates_initial, 0);
 }
 
 TEST(EndToEnd, SameSceneAndSeedGiveTheSameNumbers) {
@@ -32,7 +33,7 @@ TEST(EndToEnd, SameSceneAndSeedGiveTheSameNumbers) {
   const Evaluation b = evaluate(scene, "edge");
   EXPECT_EQ(a.near_per_step, b.near_per_step);
   EXPECT_EQ(a.candidates_per_step, b.candidates_per_step);
-  EXPECT_EQ(a.summary.impulse_Ns, b.summary.impulse_Ns);
+  EXPECT_EQ(a.summary.activity.impulse_Ns, b.summary.activity.impulse_Ns);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fragsim/control.h"
+#include "geometry/frustum.hpp"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
@@ -135,6 +136,15 @@ TEST(ControlApi, DefaultsAreTheToolsDefaults) {
   EXPECT_EQ(d.edge.replan, FRAGSIM_EDGE_REPLAN_NEVER);
   EXPECT_EQ(d.deflect_all.accel_mps2, 60.0);
   EXPECT_EQ(d.horizon_cap_s, 3.0);
+}
+
+// The default camera's frustum is the tool's (geometry/frustum.hpp), and what control.h says it is.
+TEST(ControlApi, DefaultCameraHasTheToolsDefaultFrustum) {
+  const fragsim_camera c = fragsim_default_camera();
+  EXPECT_EQ((fragsim::FrustumDef{c.fovy_deg, c.aspect, c.near_m, c.far_m}),
+            fragsim::kDefaultFrustum);
+  EXPECT_EQ((fragsim::FrustumDef{c.fovy_deg, c.aspect, c.near_m, c.far_m}),
+            (fragsim::FrustumDef{60.0, 16.0 / 9.0, 0.1, 500.0}));
 }
 
 TEST(ControlApi, DefThatSkippedTheDefaultsFunctionIsRefused) {

@@ -87,7 +87,7 @@ TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
 // otherwise.
 TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");
-  scene.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
   const std::string csv = summary_csv(scene, compare(scene, {"edge-min"}, true, nullptr, 2));
   EXPECT_EQ(fnv1a(without_new_columns(csv)), 0x50a3f6ec292999a9ull) << csv;
   EXPECT_EQ(fnv1a(csv), 0x53b4d51e67080ea7ull) << csv;
@@ -108,11 +108,11 @@ TEST(Determinism, VoronoiSceneSummaryHashIsPinned) {
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
                                      "near-plane", "edge", "edge-min"};
   const std::vector<Evaluation> runs = compare(scene, all, true, nullptr, 2);
-  EXPECT_GT(runs.front().summary.near_fragments, 0);
-  EXPECT_GT(runs.front().summary.camera_hit_fragments, 0);
+  EXPECT_GT(runs.front().summary.intersections.near_fragments, 0);
+  EXPECT_GT(runs.front().summary.intersections.camera_hit_fragments, 0);
   EXPECT_EQ(runs.back().summary.strategy, "edge-min");
-  EXPECT_EQ(runs.back().summary.near_fragments, 0);
-  EXPECT_EQ(runs.back().summary.camera_hit_fragments, 0);
+  EXPECT_EQ(runs.back().summary.intersections.near_fragments, 0);
+  EXPECT_EQ(runs.back().summary.intersections.camera_hit_fragments, 0);
   const std::string csv = summary_csv(scene, runs);
   EXPECT_EQ(fnv1a(csv), 0x819bc71d362b8e86ull) << csv;
 }
@@ -125,11 +125,11 @@ TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
   const std::vector<Evaluation> runs = compare(scene, {"fade"}, true, nullptr, 2);
   ASSERT_EQ(runs.size(), 1u);
   const RunSummary& s = runs[0].summary;
-  EXPECT_EQ(s.near_fragments, 0);
-  EXPECT_EQ(s.camera_hit_fragments, 34);
-  EXPECT_EQ(s.vanished_fragments, 111);
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.impulse_Ns, 0.0);
+  EXPECT_EQ(s.intersections.near_fragments, 0);
+  EXPECT_EQ(s.intersections.camera_hit_fragments, 34);
+  EXPECT_EQ(s.intersections.vanished_fragments, 111);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
+  EXPECT_EQ(s.activity.impulse_Ns, 0.0);
   const std::string csv = summary_csv(scene, runs);
   EXPECT_EQ(fnv1a(without_columns(
                 csv, {"pushed_exits_top", "pushed_exits_bottom", "pushed_exits_left",

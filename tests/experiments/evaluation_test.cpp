@@ -28,30 +28,30 @@ TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
   EvaluationOptions opts;
   opts.reference = &ref;
   const RunSummary s = evaluate(scene, "none", opts).summary;
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.deviated_share, 0.0);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
+  EXPECT_EQ(s.deviation.deviated_share, 0.0);
 }
 
 TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
   Scene scene = scene_named("front");
-  scene.edge.k = 0.0;
+  scene.strategies.edge.k = 0.0;
   const auto runs = compare(scene, {"none", "edge"}, false);
   ASSERT_EQ(runs.size(), 2u);
-  EXPECT_EQ(runs[1].summary.deviation_max_m, 0.0);
-  EXPECT_EQ(runs[1].summary.near_fragments, runs[0].summary.near_fragments);
+  EXPECT_EQ(runs[1].summary.deviation.max_m, 0.0);
+  EXPECT_EQ(runs[1].summary.intersections.near_fragments, runs[0].summary.intersections.near_fragments);
   EXPECT_EQ(runs[1].near_per_step, runs[0].near_per_step);
-  EXPECT_GT(runs[1].summary.candidates_initial, 0);  // it predicted, it just did not push
+  EXPECT_GT(runs[1].summary.activity.candidates_initial, 0);  // it predicted, it just did not push
 }
 
 TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
   std::vector<Evaluation> runs(4);
   runs[0].summary.strategy = "none";
   runs[1].summary.strategy = "a";
-  runs[1].summary.near_fragments = 1;
+  runs[1].summary.intersections.near_fragments = 1;
   runs[2].summary.strategy = "b";
-  runs[2].summary.deviation_mean_m = 0.5;
+  runs[2].summary.deviation.mean_m = 0.5;
   runs[3].summary.strategy = "c";
-  runs[3].summary.deviation_mean_m = 0.2;
+  runs[3].summary.deviation.mean_m = 0.2;
   const auto best = best_for_thesis_goals(runs);
   ASSERT_TRUE(best.has_value());
   EXPECT_EQ(*best, 3u);
@@ -77,18 +77,18 @@ TEST(Evaluation, BestForThesisGoalsCountsEveryFailureAlikeAndBreaksTiesByNearMis
   std::vector<Evaluation> runs(4);
   runs[0].summary.strategy = "none";  // never the best, however good
   runs[1].summary.strategy = "cam";
-  runs[1].summary.camera_hit_fragments = 1;
+  runs[1].summary.intersections.camera_hit_fragments = 1;
   runs[2].summary.strategy = "fade";
-  runs[2].summary.vanished_fragments = 1;
+  runs[2].summary.intersections.vanished_fragments = 1;
   runs[3].summary.strategy = "near";
-  runs[3].summary.near_fragments = 1;
-  runs[3].summary.near_misses = 5;
+  runs[3].summary.intersections.near_fragments = 1;
+  runs[3].summary.intersections.near_misses = 5;
   // One failure each and the same deviation: the most near misses wins.
   EXPECT_EQ(best_for_thesis_goals(runs), std::optional<std::size_t>(3));
-  runs[3].summary.near_misses = 0;  // all tied: the first named
+  runs[3].summary.intersections.near_misses = 0;  // all tied: the first named
   EXPECT_EQ(best_for_thesis_goals(runs), std::optional<std::size_t>(1));
-  runs[2].summary.vanished_fragments = 0;  // no failure beats any deviation
-  runs[2].summary.deviation_mean_m = 100.0;
+  runs[2].summary.intersections.vanished_fragments = 0;  // no failure beats any deviation
+  runs[2].summary.deviation.mean_m = 100.0;
   EXPECT_EQ(best_for_thesis_goals(runs), std::optional<std::size_t>(2));
   EXPECT_EQ(best_for_thesis_goals({runs[0]}), std::nullopt);
   EXPECT_EQ(best_for_thesis_goals({}), std::nullopt);
@@ -96,11 +96,11 @@ TEST(Evaluation, BestForThesisGoalsCountsEveryFailureAlikeAndBreaksTiesByNearMis
 
 TEST(Evaluation, ZFightingIsADepthStepAboveAThousandthOfTheDistance) {
   RunSummary s;
-  s.depth_step_m = 0.0101;
+  s.activity.depth_step_m = 0.0101;
   EXPECT_TRUE(z_fighting(s, 10.0));
-  s.depth_step_m = 0.0099;
+  s.activity.depth_step_m = 0.0099;
   EXPECT_FALSE(z_fighting(s, 10.0));
-  s.depth_step_m = 0.0;  // no near distance recorded
+  s.activity.depth_step_m = 0.0;  // no near distance recorded
   EXPECT_FALSE(z_fighting(s, 10.0));
 }
 

@@ -13,13 +13,13 @@ Scene scene_named(const std::string& name) {
 }
 
 int intersections(const RunSummary& s) {
-  return s.near_fragments + s.camera_hit_fragments;
+  return s.intersections.near_fragments + s.intersections.camera_hit_fragments;
 }
 
 TEST(ThesisFigures, Fig4_3CandidatesNeverRiseAndFallToZero) {
   const Scene scene = scene_named("thesis1000");
   ASSERT_EQ(scene.fragment_count(), 1000);
-  ASSERT_EQ(scene.edge.replan, Replan::kNever);
+  ASSERT_EQ(scene.strategies.edge.replan, Replan::kNever);
   const std::vector<int> c =
       evaluate(scene, "edge", {nullptr, nullptr, false, {}}).candidates_per_step;
   ASSERT_FALSE(c.empty());
@@ -32,8 +32,8 @@ TEST(ThesisFigures, Figs4_4And4_5NoneHitsEdgeDoesNotAndOnlySomeDeviate) {
   const auto runs = compare(scene_named("thesis125"), {"none", "edge"}, false);
   EXPECT_GE(intersections(runs[0].summary), 1);
   EXPECT_EQ(intersections(runs[1].summary), 0);
-  EXPECT_LT(runs[1].summary.deviated_share, 0.5);
-  EXPECT_GT(runs[1].summary.deviated_share, 0.0);
+  EXPECT_LT(runs[1].summary.deviation.deviated_share, 0.5);
+  EXPECT_GT(runs[1].summary.deviation.deviated_share, 0.0);
 }
 
 TEST(ThesisFigures, Fig4_6CloseExplosionDefeatsTheThesisForceNotEdgeMin) {
@@ -46,8 +46,8 @@ TEST(ThesisFigures, Fig4_6CloseExplosionDefeatsTheThesisForceNotEdgeMin) {
 TEST(ThesisFigures, EdgeMinSavesTheDefaultSceneWithLessDeviationThanDeflectAll) {
   const auto runs = compare(scene_named("front"), {"deflect-all", "edge", "edge-min"}, false);
   EXPECT_EQ(intersections(runs[2].summary), 0);
-  EXPECT_LT(runs[2].summary.deviation_mean_m, runs[0].summary.deviation_mean_m);
-  EXPECT_LT(runs[2].summary.deviation_mean_m, runs[1].summary.deviation_mean_m);
+  EXPECT_LT(runs[2].summary.deviation.mean_m, runs[0].summary.deviation.mean_m);
+  EXPECT_LT(runs[2].summary.deviation.mean_m, runs[1].summary.deviation.mean_m);
 }
 
 }  // namespace

@@ -148,7 +148,7 @@ TEST(TimeVsError, StrategyTuningComesFromItsDeclaration) {
 TEST(TimeVsError, ProbedPathIsTheStrategysOwn) {
   Scene scene = test::single_fragment({0.0, 1.6, -10.0});
   EXPECT_EQ(make_strategy("edge", scene)->path_predictor(), Predictor::kThesis);
-  scene.edge.predictor = Predictor::kDiscrete;
+  scene.strategies.edge.predictor = Predictor::kDiscrete;
   EXPECT_EQ(make_strategy("edge", scene)->path_predictor(), Predictor::kDiscrete);
   EXPECT_EQ(make_strategy("edge-min", scene)->path_predictor(), Predictor::kDiscrete);
   EXPECT_EQ(make_strategy("none", scene)->path_predictor(), Predictor::kDiscrete);

@@ -50,10 +50,10 @@ TEST(CostMetric, FillsMediansAndP95InMillisecondsFromTheStepsTimes) {
   EXPECT_EQ(metric.physics_s(), (std::vector<double>{0.004, 0.001, 0.003, 0.002}));
   RunSummary s;
   metric.fill(s);
-  EXPECT_NEAR(s.physics_ms_median, 2.0, kTol_ms);  // rank 2 of 1, 2, 3, 4 ms
-  EXPECT_NEAR(s.physics_ms_p95, 4.0, kTol_ms);     // rank ceil(3.8) = 4
-  EXPECT_EQ(s.strategy_ms_median, 0.0);
-  EXPECT_NEAR(s.strategy_ms_p95, 10.0, kTol_ms);
+  EXPECT_NEAR(s.cost.physics_ms_median, 2.0, kTol_ms);  // rank 2 of 1, 2, 3, 4 ms
+  EXPECT_NEAR(s.cost.physics_ms_p95, 4.0, kTol_ms);     // rank ceil(3.8) = 4
+  EXPECT_EQ(s.cost.strategy_ms_median, 0.0);
+  EXPECT_NEAR(s.cost.strategy_ms_p95, 10.0, kTol_ms);
 }
 
 TEST(CostMetric, BeginStartsAFreshSample) {
@@ -64,8 +64,8 @@ TEST(CostMetric, BeginStartsAFreshSample) {
   EXPECT_EQ(metric.strategy_s(), (std::vector<double>{0.002}));
   RunSummary s;
   metric.fill(s);
-  EXPECT_NEAR(s.physics_ms_p95, 1.0, kTol_ms);
-  EXPECT_NEAR(s.strategy_ms_median, 2.0, kTol_ms);
+  EXPECT_NEAR(s.cost.physics_ms_p95, 1.0, kTol_ms);
+  EXPECT_NEAR(s.cost.strategy_ms_median, 2.0, kTol_ms);
 }
 
 }  // namespace

@@ -37,9 +37,9 @@ TEST(DeviationMetric, RunAgainstItselfIsExactlyZero) {
   const TrajectoryRecord ref = record(run);
   std::vector<double> largest_m;
   const RunSummary s = deviation(ref, run, 0.01, &largest_m);
-  EXPECT_EQ(s.deviation_mean_m, 0.0);
-  EXPECT_EQ(s.deviation_max_m, 0.0);
-  EXPECT_EQ(s.deviated_share, 0.0);
+  EXPECT_EQ(s.deviation.mean_m, 0.0);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
+  EXPECT_EQ(s.deviation.deviated_share, 0.0);
   ASSERT_EQ(largest_m.size(), 5u);
   for (double d : largest_m) EXPECT_EQ(d, 0.0);
 }
@@ -51,9 +51,9 @@ TEST(DeviationMetric, OneFragmentShiftedAtOneStep) {
   run[3][2].position_m += Eigen::Vector3d(0.0, 0.02, 0.0);
   std::vector<double> largest_m;
   const RunSummary s = deviation(ref, run, 0.01, &largest_m);
-  EXPECT_NEAR(s.deviation_max_m, 0.02, kTol_m);
-  EXPECT_NEAR(s.deviation_mean_m, 0.02 / 4.0, kTol_m);  // one of four fragments moved
-  EXPECT_DOUBLE_EQ(s.deviated_share, 1.0 / 4.0);
+  EXPECT_NEAR(s.deviation.max_m, 0.02, kTol_m);
+  EXPECT_NEAR(s.deviation.mean_m, 0.02 / 4.0, kTol_m);  // one of four fragments moved
+  EXPECT_DOUBLE_EQ(s.deviation.deviated_share, 1.0 / 4.0);
   ASSERT_EQ(largest_m.size(), 4u);
   EXPECT_EQ(largest_m[0], 0.0);
   EXPECT_EQ(largest_m[1], 0.0);
@@ -72,9 +72,9 @@ TEST(DeviationMetric, KeepsEachFragmentsLargestNotItsLast) {
   const RunSummary s = deviation(ref, run, 0.01, &largest_m);
   EXPECT_NEAR(largest_m[0], 0.05, kTol_m);
   EXPECT_NEAR(largest_m[1], 0.02, kTol_m);
-  EXPECT_NEAR(s.deviation_max_m, 0.05, kTol_m);
-  EXPECT_NEAR(s.deviation_mean_m, 0.035, kTol_m);
-  EXPECT_DOUBLE_EQ(s.deviated_share, 1.0);
+  EXPECT_NEAR(s.deviation.max_m, 0.05, kTol_m);
+  EXPECT_NEAR(s.deviation.mean_m, 0.035, kTol_m);
+  EXPECT_DOUBLE_EQ(s.deviation.deviated_share, 1.0);
 }
 
 TEST(DeviationMetric, StepZeroIsCompared) {
@@ -83,8 +83,8 @@ TEST(DeviationMetric, StepZeroIsCompared) {
   Trajectory run = ref_run;
   run[0][1].position_m.x() += 0.02;
   const RunSummary s = deviation(ref, run, 0.01);
-  EXPECT_NEAR(s.deviation_max_m, 0.02, kTol_m);
-  EXPECT_DOUBLE_EQ(s.deviated_share, 0.5);
+  EXPECT_NEAR(s.deviation.max_m, 0.02, kTol_m);
+  EXPECT_DOUBLE_EQ(s.deviation.deviated_share, 0.5);
 }
 
 TEST(DeviationMetric, ShiftBelowThresholdIsNotDeviated) {
@@ -93,8 +93,8 @@ TEST(DeviationMetric, ShiftBelowThresholdIsNotDeviated) {
   Trajectory run = ref_run;
   run[2][0].position_m.z() += 0.005;
   const RunSummary s = deviation(ref, run, 0.01);
-  EXPECT_NEAR(s.deviation_max_m, 0.005, kTol_m);
-  EXPECT_EQ(s.deviated_share, 0.0);
+  EXPECT_NEAR(s.deviation.max_m, 0.005, kTol_m);
+  EXPECT_EQ(s.deviation.deviated_share, 0.0);
 }
 
 TEST(DeviationMetric, ShiftEqualToThresholdIsNotDeviated) {
@@ -108,20 +108,20 @@ TEST(DeviationMetric, ShiftEqualToThresholdIsNotDeviated) {
   Trajectory at = ref_run;
   at[1][0].position_m.z() = -4.0;
   const RunSummary s_at = deviation(ref, at, kThreshold_m);
-  EXPECT_EQ(s_at.deviation_max_m, kThreshold_m);
-  EXPECT_EQ(s_at.deviated_share, 0.0);
+  EXPECT_EQ(s_at.deviation.max_m, kThreshold_m);
+  EXPECT_EQ(s_at.deviation.deviated_share, 0.0);
 
   Trajectory past = ref_run;
   past[1][0].position_m.z() = -4.0 + kThreshold_m;
   const RunSummary s_past = deviation(ref, past, kThreshold_m);
-  EXPECT_EQ(s_past.deviation_max_m, 2.0 * kThreshold_m);
-  EXPECT_EQ(s_past.deviated_share, 0.5);
+  EXPECT_EQ(s_past.deviation.max_m, 2.0 * kThreshold_m);
+  EXPECT_EQ(s_past.deviation.deviated_share, 0.5);
 }
 
 TEST(DeviationMetric, ShorterRunThanReferenceIsAccepted) {
   const TrajectoryRecord ref = record(make_run(3, 8));
   const RunSummary s = deviation(ref, make_run(3, 5), 0.01);
-  EXPECT_EQ(s.deviation_max_m, 0.0);
+  EXPECT_EQ(s.deviation.max_m, 0.0);
 }
 
 TEST(DeviationMetric, ThrowsOnFragmentCountMismatch) {

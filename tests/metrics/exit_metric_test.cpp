@@ -116,7 +116,7 @@ TEST(ExitMetric, NeverOnScreenCountsNowhere) {
   RunSummary s;
   m.fill(s);
   EXPECT_EQ(
-      s.exits_top + s.exits_bottom + s.exits_left + s.exits_right + s.exits_near + s.exits_stayed,
+      s.exits.top + s.exits.bottom + s.exits.left + s.exits.right + s.exits.near + s.exits.stayed,
       0);
 }
 
@@ -155,13 +155,13 @@ TEST(ExitMetric, FillCountsEachKind) {
                             0.1);
   RunSummary s;
   m.fill(s);
-  EXPECT_EQ(s.exits_top, 1);
-  EXPECT_EQ(s.exits_bottom, 2);
-  EXPECT_EQ(s.exits_left, 1);
-  EXPECT_EQ(s.exits_right, 1);
-  EXPECT_EQ(s.exits_near, 1);
-  EXPECT_EQ(s.exits_stayed, 1);
-  EXPECT_EQ(s.near_misses, 0);
+  EXPECT_EQ(s.exits.top, 1);
+  EXPECT_EQ(s.exits.bottom, 2);
+  EXPECT_EQ(s.exits.left, 1);
+  EXPECT_EQ(s.exits.right, 1);
+  EXPECT_EQ(s.exits.near, 1);
+  EXPECT_EQ(s.exits.stayed, 1);
+  EXPECT_EQ(s.intersections.near_misses, 0);
 }
 
 TEST(ExitMetric, ExitNamesForCsv) {
@@ -185,7 +185,7 @@ TEST(ExitMetricNearMiss, FastPassBesideTheEyeBetweenSnapshots) {
   EXPECT_FALSE(m.touched(0));
   RunSummary s;
   m.fill(s);
-  EXPECT_EQ(s.near_misses, 1);
+  EXPECT_EQ(s.intersections.near_misses, 1);
 }
 
 TEST(ExitMetricNearMiss, SlowPassWithinTheDistance) {
@@ -198,7 +198,7 @@ TEST(ExitMetricNearMiss, ThroughTheNearRectangleIsNoMiss) {
   EXPECT_FALSE(m.near_miss(0));
   RunSummary s;
   m.fill(s);
-  EXPECT_EQ(s.near_misses, 0);
+  EXPECT_EQ(s.intersections.near_misses, 0);
 }
 
 TEST(ExitMetricNearMiss, ReportedCameraHitIsNoMiss) {
@@ -224,7 +224,7 @@ TEST(ExitMetricNearMiss, CountsFragmentsNotSteps) {
                             1.0);
   RunSummary s;
   m.fill(s);
-  EXPECT_EQ(s.near_misses, 2);
+  EXPECT_EQ(s.intersections.near_misses, 2);
 }
 
 TEST(ExitMetric, TetrahedronBesideTheLensIsANearMissWhereItsBoxWouldTouch) {
@@ -279,11 +279,11 @@ TEST(ExitMetric, PushedExitsCountOnlyFragmentsGivenAForce) {
   EXPECT_TRUE(m.pushed(3));
   RunSummary s;
   m.fill(s);
-  EXPECT_EQ(s.exits_top, 1);
-  EXPECT_EQ(s.pushed_exits_top, 0);
-  EXPECT_EQ(s.pushed_exits_bottom, 1);
-  EXPECT_EQ(s.pushed_exits_left, 1);
-  EXPECT_EQ(s.pushed_exits_right + s.pushed_exits_near + s.pushed_exits_stayed, 0);
+  EXPECT_EQ(s.exits.top, 1);
+  EXPECT_EQ(s.pushed_exits.top, 0);
+  EXPECT_EQ(s.pushed_exits.bottom, 1);
+  EXPECT_EQ(s.pushed_exits.left, 1);
+  EXPECT_EQ(s.pushed_exits.right + s.pushed_exits.near + s.pushed_exits.stayed, 0);
 }
 
 }  // namespace

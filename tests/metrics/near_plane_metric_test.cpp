@@ -42,31 +42,32 @@ RunSummary sweep(const std::vector<Eigen::Vector3d>& path, double half_m = 0.01)
 TEST(NearPlaneMetric, CentreSweepingThroughTheRectangleCountsOnce) {
   // From 0.25 m in front to 0.05 m behind the eye in one step: never sampled at the near plane.
   const RunSummary s = sweep({{0.0, 0.0, -0.25}, {0.0, 0.0, 0.05}, {0.0, 0.0, 0.35}});
-  EXPECT_EQ(s.near_fragments, 1);
-  EXPECT_EQ(s.near_fragment_steps, 1);
+  EXPECT_EQ(s.intersections.near_fragments, 1);
+  EXPECT_EQ(s.intersections.near_fragment_steps, 1);
 }
 
 TEST(NearPlaneMetric, PassingOneCentimetreOutsideDoesNotCount) {
   // The box's edge passes 1 cm beyond the rectangle's right edge: x = 0.10264 + 0.01 + 0.01.
   const double x = 0.1 * std::tan(30.0 * kPi / 180.0) * 16.0 / 9.0 + 0.02;
-  EXPECT_EQ(sweep({{x, 0.0, -0.25}, {x, 0.0, 0.05}}).near_fragments, 0);
+  EXPECT_EQ(sweep({{x, 0.0, -0.25}, {x, 0.0, 0.05}}).intersections.near_fragments, 0);
   // And 1 cm above the top edge.
   const double y = 0.1 * std::tan(30.0 * kPi / 180.0) + 0.02;
-  EXPECT_EQ(sweep({{0.0, y, -0.25}, {0.0, y, 0.05}}).near_fragments, 0);
+  EXPECT_EQ(sweep({{0.0, y, -0.25}, {0.0, y, 0.05}}).intersections.near_fragments, 0);
   // Just inside (1 mm overlap) it counts.
-  EXPECT_EQ(sweep({{x - 0.011, 0.0, -0.25}, {x - 0.011, 0.0, 0.05}}).near_fragments, 1);
+  EXPECT_EQ(sweep({{x - 0.011, 0.0, -0.25}, {x - 0.011, 0.0, 0.05}}).intersections.near_fragments,
+            1);
 }
 
 TEST(NearPlaneMetric, StoppingShortOfThePlaneDoesNotCount) {
   // The box's near face stops 1 cm before the plane: centre at depth 0.1 + 0.01 + 0.01.
-  EXPECT_EQ(sweep({{0.0, 0.0, -0.5}, {0.0, 0.0, -0.12}}).near_fragments, 0);
-  EXPECT_EQ(sweep({{0.0, 0.0, -0.5}, {0.0, 0.0, -0.105}}).near_fragments, 1);
+  EXPECT_EQ(sweep({{0.0, 0.0, -0.5}, {0.0, 0.0, -0.12}}).intersections.near_fragments, 0);
+  EXPECT_EQ(sweep({{0.0, 0.0, -0.5}, {0.0, 0.0, -0.105}}).intersections.near_fragments, 1);
 }
 
 TEST(NearPlaneMetric, DiagonalSweepAcrossTheCornerRegion) {
   // Enters the plane's depth only where it is already 5 cm beyond the side: no intersection,
   // although both end points' x and depth ranges, taken apart, overlap the rectangle's.
-  EXPECT_EQ(sweep({{0.0, 0.0, -0.3}, {0.3, 0.0, 0.1}}).near_fragments, 0);
+  EXPECT_EQ(sweep({{0.0, 0.0, -0.3}, {0.3, 0.0, 0.1}}).intersections.near_fragments, 0);
 }
 
 // ---- Convex pieces (FragmentState::shape), counted by the exact polytope test (HullSweep): the
@@ -121,8 +122,8 @@ TEST(NearPlaneMetric, TetrahedronVertexFirstAtTheLens) {
   const Swept hull = sweep_piece(
       test::shaped_fragment(t, Eigen::Vector3d::Zero(), turn_vertex_to(Eigen::Vector3d::UnitZ())),
       straight_at_lens());
-  EXPECT_EQ(hull.summary.near_fragments, 1);
-  EXPECT_EQ(hull.summary.near_fragment_steps, 2);
+  EXPECT_EQ(hull.summary.intersections.near_fragments, 1);
+  EXPECT_EQ(hull.summary.intersections.near_fragment_steps, 2);
   EXPECT_EQ(hull.per_step[18], 1);  // step 19
   EXPECT_EQ(hull.per_step[19], 1);  // step 20
 }
@@ -137,11 +138,11 @@ TEST(NearPlaneMetric, TetrahedronFaceFirstAtTheLensAgainstItsBox) {
       test::shaped_fragment(t, Eigen::Vector3d::Zero(), turn_vertex_to(-Eigen::Vector3d::UnitZ()));
   const Swept hull = sweep_piece(f, straight_at_lens());
   const Swept box = sweep_piece(test::as_box(f), straight_at_lens());
-  EXPECT_EQ(hull.summary.near_fragment_steps, 2);
+  EXPECT_EQ(hull.summary.intersections.near_fragment_steps, 2);
   EXPECT_EQ(hull.per_step[18], 0);
   EXPECT_EQ(hull.per_step[19], 1);
   EXPECT_EQ(hull.per_step[20], 1);
-  EXPECT_EQ(box.summary.near_fragment_steps, 3);
+  EXPECT_EQ(box.summary.intersections.near_fragment_steps, 3);
   EXPECT_EQ(box.per_step[18], 1);
 }
 
@@ -156,11 +157,11 @@ TEST(NearPlaneMetric, TetrahedronBesideTheLensMissesWhereItsBoxWouldCount) {
   const FragmentState f =
       test::shaped_fragment(t, Eigen::Vector3d::Zero(), turn_vertex_to(Eigen::Vector3d::UnitX()));
   const std::vector<Eigen::Vector3d> path{{x, 0.0, -0.25}, {x, 0.0, 0.05}};
-  EXPECT_EQ(sweep_piece(f, path).summary.near_fragments, 0);
-  EXPECT_EQ(sweep_piece(test::as_box(f), path).summary.near_fragments, 1);
+  EXPECT_EQ(sweep_piece(f, path).summary.intersections.near_fragments, 0);
+  EXPECT_EQ(sweep_piece(test::as_box(f), path).summary.intersections.near_fragments, 1);
   // 1 mm closer than touching, it counts.
   const std::vector<Eigen::Vector3d> inside{{x - 0.011, 0.0, -0.25}, {x - 0.011, 0.0, 0.05}};
-  EXPECT_EQ(sweep_piece(f, inside).summary.near_fragments, 1);
+  EXPECT_EQ(sweep_piece(f, inside).summary.intersections.near_fragments, 1);
 }
 
 TEST(NearPlaneMetric, SlabPastTheCornerIsNotCountedThoughItsCameraBoxWouldBe) {
@@ -178,8 +179,8 @@ TEST(NearPlaneMetric, SlabPastTheCornerIsNotCountedThoughItsCameraBoxWouldBe) {
   const ConvexShape slab = test::triangular_slab({pa - g, pb - g, pc - g}, 0.01);
   const FragmentState f = test::shaped_fragment(slab, Eigen::Vector3d::Zero());
   const std::vector<Eigen::Vector3d> path{{g.x(), g.y(), -0.3}, {g.x(), g.y(), 0.1}};
-  EXPECT_EQ(sweep_piece(f, path).summary.near_fragments, 0);
-  EXPECT_EQ(sweep_piece(test::as_box(f), path).summary.near_fragments, 1);
+  EXPECT_EQ(sweep_piece(f, path).summary.intersections.near_fragments, 0);
+  EXPECT_EQ(sweep_piece(test::as_box(f), path).summary.intersections.near_fragments, 1);
   FragmentState at_a = f;
   at_a.position_m = path[0];
   FragmentState at_b = f;
@@ -188,7 +189,7 @@ TEST(NearPlaneMetric, SlabPastTheCornerIsNotCountedThoughItsCameraBoxWouldBe) {
       sweep_meets_near_rectangle(sweep_end(CameraPose{}, at_a), sweep_end(CameraPose{}, at_b)));
   // Moved 3 cm toward the centre along (-1, -1), it meets the corner.
   const Eigen::Vector3d in(-0.03, -0.03, 0.0);
-  EXPECT_EQ(sweep_piece(f, {path[0] + in, path[1] + in}).summary.near_fragments, 1);
+  EXPECT_EQ(sweep_piece(f, {path[0] + in, path[1] + in}).summary.intersections.near_fragments, 1);
 }
 
 TEST(NearPlaneMetric, CubeHullCountsAsItsBox) {
@@ -229,15 +230,16 @@ TEST(NearPlaneMetric, CubeHullCountsAsItsBox) {
     const Swept box = sweep_piece(test::as_box(f), path);
     if (aligned) {
       EXPECT_EQ(hull.per_step, box.per_step) << "trial " << trial;
-      hits += hull.summary.near_fragments;
+      hits += hull.summary.intersections.near_fragments;
     } else {
       for (std::size_t k = 0; k < hull.per_step.size(); ++k) {
         EXPECT_LE(hull.per_step[k], box.per_step[k]) << "trial " << trial;
       }
-      box_steps += box.summary.near_fragment_steps;
-      hull_steps += hull.summary.near_fragment_steps;
+      box_steps += box.summary.intersections.near_fragment_steps;
+      hull_steps += hull.summary.intersections.near_fragment_steps;
     }
-    EXPECT_EQ(hull.summary.camera_hit_fragments, box.summary.camera_hit_fragments);
+    EXPECT_EQ(hull.summary.intersections.camera_hit_fragments,
+              box.summary.intersections.camera_hit_fragments);
   }
   EXPECT_GT(hits, 50);  // the paths do reach the rectangle, so the comparison means something
   std::cout << "[ measure  ] 500 turned boxes: near steps " << box_steps << " as boxes, "

@@ -68,7 +68,7 @@ Shares measure(const MetricsDef& def, const CameraPose& cam,
   m.observe(snapshot(1, cam, frags));
   RunSummary s;
   m.fill(s);
-  return {s.occlusion_mean, s.central_occlusion_mean, s.single_fragment_occlusion_max};
+  return {s.occlusion.mean, s.occlusion.central_mean, s.occlusion.single_fragment_max};
 }
 
 // A thin plate facing the camera at depth_m: its NDC half size is half_m / depth_m.
@@ -232,19 +232,19 @@ TEST(OcclusionMetric, MeanAndMaxOverSteps) {
 
   RunSummary s;
   m.fill(s);
-  EXPECT_NEAR(s.occlusion_mean, (576.0 + 648.0) / pixels / 4.0, 1e-12);
-  EXPECT_NEAR(s.occlusion_max, 648.0 / pixels, 1e-12);
-  EXPECT_NEAR(s.central_occlusion_mean, (576.0 + 648.0) / 2304.0 / 4.0, 1e-12);
-  EXPECT_NEAR(s.central_occlusion_max, 648.0 / 2304.0, 1e-12);
-  EXPECT_NEAR(s.single_fragment_occlusion_max, 576.0 / pixels, 1e-12);
+  EXPECT_NEAR(s.occlusion.mean, (576.0 + 648.0) / pixels / 4.0, 1e-12);
+  EXPECT_NEAR(s.occlusion.max, 648.0 / pixels, 1e-12);
+  EXPECT_NEAR(s.occlusion.central_mean, (576.0 + 648.0) / 2304.0 / 4.0, 1e-12);
+  EXPECT_NEAR(s.occlusion.central_max, 648.0 / 2304.0, 1e-12);
+  EXPECT_NEAR(s.occlusion.single_fragment_max, 576.0 / pixels, 1e-12);
 
   // begin() starts a new run.
   m.begin(run_info(2, 1), snapshot(0, cam, none));
   EXPECT_TRUE(m.viewport_share_per_step().empty());
   RunSummary empty;
   m.fill(empty);
-  EXPECT_DOUBLE_EQ(empty.occlusion_max, 0.0);
-  EXPECT_DOUBLE_EQ(empty.single_fragment_occlusion_max, 0.0);
+  EXPECT_DOUBLE_EQ(empty.occlusion.max, 0.0);
+  EXPECT_DOUBLE_EQ(empty.occlusion.single_fragment_max, 0.0);
 }
 
 // Draws in a fixed order (arguments of one call are evaluated in an unspecified order), so the
@@ -486,7 +486,7 @@ Shares measure_faded(const MetricsDef& def, const CameraPose& cam,
   m.observe(s);
   RunSummary r;
   m.fill(r);
-  return {r.occlusion_mean, r.central_occlusion_mean, r.single_fragment_occlusion_max};
+  return {r.occlusion.mean, r.occlusion.central_mean, r.occlusion.single_fragment_max};
 }
 
 // The plate of FacingPlateCoversItsProjectedSquare: 676 pixels of the 100 x 100 grid.

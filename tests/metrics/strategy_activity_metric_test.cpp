@@ -70,19 +70,19 @@ TEST(StrategyActivityMetric, CountsWhatTheStrategyDidStepByStep) {
 
   RunSummary s;
   metric.fill(s);
-  EXPECT_EQ(s.candidates_initial, 2);
-  EXPECT_EQ(s.candidates_max, 2);
-  EXPECT_EQ(s.candidate_steps, 3);
-  EXPECT_EQ(s.capped_forces, 1);
-  EXPECT_EQ(s.guarded, 1);
-  EXPECT_EQ(s.deferred, 3);
-  EXPECT_EQ(s.wall_contacts, 2);
-  EXPECT_EQ(s.forced_fragments, 2);
-  EXPECT_NEAR(s.impulse_Ns, 5.0 * kDt_s + 6.0 * kDt_s, 1e-12);
-  EXPECT_NEAR(s.max_accel_mps2, 6.0, 1e-12);
-  EXPECT_EQ(s.min_near_m, 0.05);
+  EXPECT_EQ(s.activity.candidates_initial, 2);
+  EXPECT_EQ(s.activity.candidates_max, 2);
+  EXPECT_EQ(s.activity.candidate_steps, 3);
+  EXPECT_EQ(s.activity.capped_forces, 1);
+  EXPECT_EQ(s.activity.guarded, 1);
+  EXPECT_EQ(s.activity.deferred, 3);
+  EXPECT_EQ(s.activity.wall_contacts, 2);
+  EXPECT_EQ(s.activity.forced_fragments, 2);
+  EXPECT_NEAR(s.activity.impulse_Ns, 5.0 * kDt_s + 6.0 * kDt_s, 1e-12);
+  EXPECT_NEAR(s.activity.max_accel_mps2, 6.0, 1e-12);
+  EXPECT_EQ(s.activity.min_near_m, 0.05);
   // Depth step at 10 m with a 24-bit buffer and the near plane at 0.05 m: 10^2 / (0.05 2^24).
-  EXPECT_NEAR(s.depth_step_m, 100.0 / (0.05 * 16777216.0), 1e-15);
+  EXPECT_NEAR(s.activity.depth_step_m, 100.0 / (0.05 * 16777216.0), 1e-15);
 }
 
 TEST(StrategyActivityMetric, RunWithoutStepsReportsNothing) {
@@ -92,14 +92,14 @@ TEST(StrategyActivityMetric, RunWithoutStepsReportsNothing) {
   snap.fragments = frags;
   metric.begin({nullptr, "none", 2, 0, kDt_s}, snap);
   RunSummary s;
-  s.candidates_max = 7;  // overwritten
+  s.activity.candidates_max = 7;  // overwritten
   metric.fill(s);
-  EXPECT_EQ(s.candidates_initial, 0);
-  EXPECT_EQ(s.candidates_max, 0);
-  EXPECT_EQ(s.forced_fragments, 0);
-  EXPECT_EQ(s.impulse_Ns, 0.0);
-  EXPECT_EQ(s.min_near_m, 0.0);
-  EXPECT_EQ(s.depth_step_m, 0.0);  // no near distance, no depth step
+  EXPECT_EQ(s.activity.candidates_initial, 0);
+  EXPECT_EQ(s.activity.candidates_max, 0);
+  EXPECT_EQ(s.activity.forced_fragments, 0);
+  EXPECT_EQ(s.activity.impulse_Ns, 0.0);
+  EXPECT_EQ(s.activity.min_near_m, 0.0);
+  EXPECT_EQ(s.activity.depth_step_m, 0.0);  // no near distance, no depth step
 }
 
 }  // namespace

@@ -56,21 +56,22 @@ RunSummary run(const std::vector<Frame>& frames, bool with_opacity = true) {
 TEST(VanishedMetric, InvisibleCrossingIsNoIntersectionButVanished) {
   // Opaque: the swept test counts it.
   const RunSummary opaque = run({{{0, 0, -1.0}}, {{0, 0, -0.2}}, {{0, 0, 0.2}}}, false);
-  EXPECT_EQ(opaque.near_fragments, 1);
-  EXPECT_EQ(opaque.vanished_fragments, 0);
+  EXPECT_EQ(opaque.intersections.near_fragments, 1);
+  EXPECT_EQ(opaque.intersections.vanished_fragments, 0);
   // Invisible at the end of the crossing step: nothing drawn at the plane.
   const RunSummary end0 = run({{{0, 0, -1.0}, 1.0f}, {{0, 0, -0.2}, 0.3f}, {{0, 0, 0.2}, 0.0f}});
-  EXPECT_EQ(end0.near_fragments, 0);
-  EXPECT_EQ(end0.near_fragment_steps, 0);
-  EXPECT_EQ(end0.vanished_fragments, 1);  // and it dropped below half, in view, at z = -0.2
+  EXPECT_EQ(end0.intersections.near_fragments, 0);
+  EXPECT_EQ(end0.intersections.near_fragment_steps, 0);
+  EXPECT_EQ(end0.intersections.vanished_fragments,
+            1);  // and it dropped below half, in view, at z = -0.2
   // Invisible at the start of it (it faded out before; it is counted once).
   const RunSummary start0 = run({{{0, 0, -1.0}, 1.0f}, {{0, 0, -0.2}, 0.0f}, {{0, 0, 0.2}, 0.4f}});
-  EXPECT_EQ(start0.near_fragments, 0);
-  EXPECT_EQ(start0.vanished_fragments, 1);
+  EXPECT_EQ(start0.intersections.near_fragments, 0);
+  EXPECT_EQ(start0.intersections.vanished_fragments, 1);
   // Faint but drawn at both ends: a cut shows, so it is an intersection.
   const RunSummary faint = run({{{0, 0, -1.0}, 1.0f}, {{0, 0, -0.2}, 0.1f}, {{0, 0, 0.2}, 0.1f}});
-  EXPECT_EQ(faint.near_fragments, 1);
-  EXPECT_EQ(faint.vanished_fragments, 1);  // faded in view all the same
+  EXPECT_EQ(faint.intersections.near_fragments, 1);
+  EXPECT_EQ(faint.intersections.vanished_fragments, 1);  // faded in view all the same
 }
 
 // Invisible when it crosses, but it never dropped through one half in view: it came in invisible
@@ -78,25 +79,25 @@ TEST(VanishedMetric, InvisibleCrossingIsNoIntersectionButVanished) {
 TEST(VanishedMetric, CrossingInvisibleCountsEvenWithoutADropInView) {
   const RunSummary s = run(
       {{{0, 0, -1.0}, 1.0f}, {{5.0, 0, -0.2}, 0.0f}, {{0, 0, -0.1}, 0.0f}, {{0, 0, 0.2}, 0.0f}});
-  EXPECT_EQ(s.near_fragments, 0);
-  EXPECT_EQ(s.vanished_fragments, 1);
+  EXPECT_EQ(s.intersections.near_fragments, 0);
+  EXPECT_EQ(s.intersections.vanished_fragments, 1);
 }
 
 TEST(VanishedMetric, DropBelowHalfCountsOnlyInViewAndOnce) {
   // In the middle of the view at 0.6 m: 1 -> 0.4.
-  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.4f}}).vanished_fragments, 1);
+  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.4f}}).intersections.vanished_fragments, 1);
   // Exactly one half is not below it.
-  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.5f}}).vanished_fragments, 0);
+  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.5f}}).intersections.vanished_fragments, 0);
   // Far outside the view (2 m to the right at 0.6 m depth, where the half width is 0.62 m).
-  EXPECT_EQ(run({{{2.0, 0, -2.0}}, {{2.0, 0, -0.6}, 0.4f}}).vanished_fragments, 0);
+  EXPECT_EQ(run({{{2.0, 0, -2.0}}, {{2.0, 0, -0.6}, 0.4f}}).intersections.vanished_fragments, 0);
   // Behind the eye.
-  EXPECT_EQ(run({{{0, 0, 2.0}}, {{0, 0, 0.6}, 0.0f}}).vanished_fragments, 0);
+  EXPECT_EQ(run({{{0, 0, 2.0}}, {{0, 0, 0.6}, 0.0f}}).intersections.vanished_fragments, 0);
   // Down, up and down again: one fragment, counted once.
   EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.4f}, {{0, 0, -0.9}, 0.9f}, {{0, 0, -0.6}, 0.3f}})
-                .vanished_fragments,
+                .intersections.vanished_fragments,
             1);
   // Opaque frames (every strategy but fade): nothing vanishes.
-  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.0f}}, false).vanished_fragments, 0);
+  EXPECT_EQ(run({{{0, 0, -2.0}}, {{0, 0, -0.6}, 0.0f}}, false).intersections.vanished_fragments, 0);
 }
 
 }  // namespace

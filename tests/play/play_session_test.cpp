@@ -177,8 +177,8 @@ TEST(PlaySession, EveryFlightReplaysToTheHudsCounts) {
     EvaluationOptions eval;
     eval.occlusion = false;
     const Evaluation e = evaluate(replay, f.strategy, eval);
-    EXPECT_EQ(e.summary.near_fragments, f.near_fragments) << f.strategy;
-    EXPECT_EQ(e.summary.camera_hit_fragments, f.camera_hits) << f.strategy;
+    EXPECT_EQ(e.summary.intersections.near_fragments, f.near_fragments) << f.strategy;
+    EXPECT_EQ(e.summary.intersections.camera_hit_fragments, f.camera_hits) << f.strategy;
   }
   EXPECT_EQ(flights[0].recorded->track_csv, (dir.path() / "play-001.csv").string());
   EXPECT_EQ(flights[1].recorded->track_csv, (dir.path() / "play-002.csv").string());

@@ -35,13 +35,13 @@ TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
     const RunSummary& b = back[i];
     EXPECT_EQ(b.strategy, a.strategy);
     EXPECT_EQ(b.seed, a.seed);
-    EXPECT_EQ(b.near_fragments, a.near_fragments);
-    EXPECT_EQ(b.camera_hit_fragments, a.camera_hit_fragments);
-    EXPECT_EQ(b.deviation_mean_m, a.deviation_mean_m);  // shortest round-trip text: exact
-    EXPECT_EQ(b.occlusion_max, a.occlusion_max);
-    EXPECT_EQ(b.impulse_Ns, a.impulse_Ns);
-    EXPECT_EQ(b.min_near_m, a.min_near_m);
-    EXPECT_EQ(b.exits_top, a.exits_top);
+    EXPECT_EQ(b.intersections.near_fragments, a.intersections.near_fragments);
+    EXPECT_EQ(b.intersections.camera_hit_fragments, a.intersections.camera_hit_fragments);
+    EXPECT_EQ(b.deviation.mean_m, a.deviation.mean_m);  // shortest round-trip text: exact
+    EXPECT_EQ(b.occlusion.max, a.occlusion.max);
+    EXPECT_EQ(b.activity.impulse_Ns, a.activity.impulse_Ns);
+    EXPECT_EQ(b.activity.min_near_m, a.activity.min_near_m);
+    EXPECT_EQ(b.exits.top, a.exits.top);
   }
   // config.ini is the resolved scene and loads back to the same scene.
   EXPECT_EQ(scene_to_ini(load_scene(dir + "/config.ini")), scene_to_ini(scene));
@@ -65,8 +65,8 @@ TEST(SweepSummary, SummaryCellsAreSummaryCsvRows) {
   e.summary.scene = "hand";
   e.summary.strategy = "edge";
   e.summary.seed = 42;
-  e.summary.near_fragments = 3;
-  e.summary.deviation_mean_m = 0.1;
+  e.summary.intersections.near_fragments = 3;
+  e.summary.deviation.mean_m = 0.1;
   auto join = [](const Values& cells) {
     std::string s;
     for (const std::string& c : cells) s += (s.empty() ? "" : ",") + c;

@@ -48,15 +48,15 @@ Evaluation made_run(const std::string& strategy, int near, int cam, double dev_m
   e.has_deviation = true;
   RunSummary& s = e.summary;
   s.strategy = strategy;
-  s.near_fragments = near;
-  s.near_fragment_steps = 2 * near;
-  s.camera_hit_fragments = cam;
-  s.deviation_mean_m = dev_mean_m;
-  s.deviation_max_m = 10 * dev_mean_m;
-  s.occlusion_mean = 0.1;
-  s.occlusion_max = 0.9;
-  s.central_occlusion_mean = 0.2;
-  s.central_occlusion_max = central_max;
+  s.intersections.near_fragments = near;
+  s.intersections.near_fragment_steps = 2 * near;
+  s.intersections.camera_hit_fragments = cam;
+  s.deviation.mean_m = dev_mean_m;
+  s.deviation.max_m = 10 * dev_mean_m;
+  s.occlusion.mean = 0.1;
+  s.occlusion.max = 0.9;
+  s.occlusion.central_mean = 0.2;
+  s.occlusion.central_max = central_max;
   e.near_per_step = {0, near, 0};
   e.candidates_per_step = {0, 0, 0};
   e.occlusion_per_step = {0.1, 0.9, 0.1};
@@ -112,7 +112,7 @@ TEST(HtmlReport, ReadingSaysWhenNoStrategyMetTheGoals) {
 // its count, while edge-min, with more deviation, is the best.
 TEST(HtmlReport, ReadingCountsVanishedFragmentsAsAFailure) {
   Evaluation fade = made_run("fade", 0, 2, 0.0, 0.8);
-  fade.summary.vanished_fragments = 40;
+  fade.summary.intersections.vanished_fragments = 40;
   const std::vector<Evaluation> runs{made_run("none", 18, 34, 0.0, 0.963), fade,
                                      made_run("edge-min", 0, 0, 0.072, 0.939)};
   const std::string text = all_text(report_reading(runs));
@@ -124,7 +124,7 @@ TEST(HtmlReport, ReadingCountsVanishedFragmentsAsAFailure) {
       << text;
   // Alone against none, fade has not met the goals: it is the closest, with its vanished count.
   Evaluation clean_fade = made_run("fade", 0, 0, 0.0, 0.8);
-  clean_fade.summary.vanished_fragments = 40;
+  clean_fade.summary.intersections.vanished_fragments = 40;
   const std::string alone = all_text(report_reading({made_run("none", 18, 34, 0.0), clean_fade}));
   EXPECT_NE(alone.find("No strategy met the thesis's goals"), std::string::npos) << alone;
   EXPECT_NE(alone.find("The closest, fade: 0 near-plane intersections, 0 camera hits, 40 "
@@ -168,15 +168,16 @@ TEST(HtmlReport, PageHasTheTableRowChartsAndSettingsOfTheComparison) {
   ASSERT_TRUE(best);
   for (std::size_t i = 0; i < c.runs.size(); ++i) {
     const RunSummary& s = c.runs[i].summary;
-    const bool met = s.near_fragments + s.camera_hit_fragments == 0;
+    const bool met = s.intersections.near_fragments + s.intersections.camera_hit_fragments == 0;
     const std::string row = std::string(i == *best && met ? "<tr class=\"best\">" : "<tr>") +
-                            "<td>" + s.strategy + "</td><td>" + std::to_string(s.near_fragments) +
-                            "</td><td>" + std::to_string(s.near_fragment_steps) + "</td><td>" +
-                            std::to_string(s.camera_hit_fragments) + "</td>";
+                            "<td>" + s.strategy + "</td><td>" +
+                            std::to_string(s.intersections.near_fragments) + "</td><td>" +
+                            std::to_string(s.intersections.near_fragment_steps) + "</td><td>" +
+                            std::to_string(s.intersections.camera_hit_fragments) + "</td>";
     EXPECT_EQ(occurrences(page, row), 1u) << row;
   }
   EXPECT_EQ(occurrences(page, "<tr"), c.runs.size() + 1);  // the header and a row per strategy
-  // The reading names the best strategy (edge-min clears thesis125, see data/scenes/README.md).
+  // The reading names the best strategy (edge-min clears thesis125, see docs/guide.md).
   EXPECT_EQ(c.runs[*best].summary.strategy, "edge-min");
   EXPECT_NE(page.find("<p>edge-min met the thesis&#39;s goals best"), std::string::npos);
   // Five charts, a line per strategy each, and the sheet beside the page.

@@ -19,33 +19,34 @@ Evaluation hand_run(const std::string& strategy) {
   e.has_deviation = true;
   RunSummary& s = e.summary;
   s.strategy = strategy;
-  s.near_fragments = 3;
-  s.near_fragment_steps = 7;
-  s.camera_hit_fragments = 2;
-  s.deviation_mean_m = 0.08205;  // stored just below the half: 0.0820
-  s.deviation_max_m = 8.7285;    // stored just above the half: 8.729
-  s.deviated_share = 0.0375;     // 3.75 exactly, a tie: to even, 3.8
-  s.occlusion_mean = 0.079;
-  s.occlusion_max = -1e-12;  // a rounding residue: "0.0", never "-0.0"
-  s.central_occlusion_max = 0.9634;
-  s.exits_top = 749;
-  s.exits_bottom = 489;
-  s.exits_left = 240;
-  s.exits_right = 233;
-  s.exits_near = 17;
-  s.exits_stayed = 0;
-  s.forced_fragments = 65;  // of them, 29 left by the top, 11 the bottom, 12 left, 13 right
-  s.pushed_exits_top = 29;
-  s.pushed_exits_bottom = 11;
-  s.pushed_exits_left = 12;
-  s.pushed_exits_right = 13;
-  s.near_misses = 616;
-  s.candidates_initial = 51;
-  s.impulse_Ns = 28.635;
-  s.capped_forces = 4;
-  s.min_near_m = 0.1;
-  s.physics_ms_median = 0.9375;
-  s.strategy_ms_median = 0.0345;
+  s.intersections.near_fragments = 3;
+  s.intersections.near_fragment_steps = 7;
+  s.intersections.camera_hit_fragments = 2;
+  s.deviation.mean_m = 0.08205;         // stored just below the half: 0.0820
+  s.deviation.max_m = 8.7285;           // stored just above the half: 8.729
+  s.deviation.deviated_share = 0.0375;  // 3.75 exactly, a tie: to even, 3.8
+  s.occlusion.mean = 0.079;
+  s.occlusion.max = -1e-12;  // a rounding residue: "0.0", never "-0.0"
+  s.occlusion.central_max = 0.9634;
+  s.exits.top = 749;
+  s.exits.bottom = 489;
+  s.exits.left = 240;
+  s.exits.right = 233;
+  s.exits.near = 17;
+  s.exits.stayed = 0;
+  s.activity.forced_fragments =
+      65;  // of them, 29 left by the top, 11 the bottom, 12 left, 13 right
+  s.pushed_exits.top = 29;
+  s.pushed_exits.bottom = 11;
+  s.pushed_exits.left = 12;
+  s.pushed_exits.right = 13;
+  s.intersections.near_misses = 616;
+  s.activity.candidates_initial = 51;
+  s.activity.impulse_Ns = 28.635;
+  s.activity.capped_forces = 4;
+  s.activity.min_near_m = 0.1;
+  s.cost.physics_ms_median = 0.9375;
+  s.cost.strategy_ms_median = 0.0345;
   e.occlusion_per_step = {0.079};
   return e;
 }
@@ -125,12 +126,12 @@ TEST(ResultsTable, ColumnsInOrder) {
 TEST(ResultsTable, TerminalPageAndCsvShowTheSameCells) {
   Evaluation none = hand_run("none");
   none.has_deviation = false;
-  none.summary.forced_fragments = 0;  // pushed nothing: no pushed exits to show
+  none.summary.activity.forced_fragments = 0;  // pushed nothing: no pushed exits to show
   Evaluation other = hand_run("other");
   other.occlusion_per_step.clear();  // --no-occlusion
   Evaluation odd = hand_run("odd");
-  odd.summary.deviation_mean_m = std::numeric_limits<double>::quiet_NaN();
-  odd.summary.impulse_Ns = std::numeric_limits<double>::infinity();
+  odd.summary.deviation.mean_m = std::numeric_limits<double>::quiet_NaN();
+  odd.summary.activity.impulse_Ns = std::numeric_limits<double>::infinity();
   const std::vector<Evaluation> runs{hand_run("edge-min"), none, other, odd};
   const ResultsTable table = results_table(hand_scene(), runs);
   ASSERT_EQ(table.rows.size(), runs.size());
@@ -197,13 +198,13 @@ TEST(ResultsTable, TerminalLegendIsTheReadmeText) {
 TEST(ResultsTable, NotesComeFromTheRunsNumbersNotTheirNames) {
   const Scene scene = hand_scene();
   Evaluation pulled = hand_run("pull-in");  // a strategy the table has never heard of
-  pulled.summary.min_near_m = 0.01;
-  pulled.summary.depth_step_m = 0.000596;
+  pulled.summary.activity.min_near_m = 0.01;
+  pulled.summary.activity.depth_step_m = 0.000596;
   Evaluation walled = hand_run("box");
-  walled.summary.wall_contacts = 12;
+  walled.summary.activity.wall_contacts = 12;
   Evaluation untouched = hand_run("near-plane");  // the name alone earns no note
   Evaluation capped = hand_run("edge");
-  capped.summary.unsaved_by_cap = 5;
+  capped.summary.activity.unsaved_by_cap = 5;
   const ResultsTable table = results_table(scene, {pulled, walled, untouched, capped});
   std::vector<std::string> untimed;
   int timed = 0;
@@ -225,14 +226,14 @@ TEST(ResultsTable, NotesComeFromTheRunsNumbersNotTheirNames) {
       "box: 12 contact points with the wall",
       "edge: 5 fragments the acceleration cap left unsaved (capped and still intersecting)"};
   EXPECT_EQ(untimed, want);
-  EXPECT_EQ(scene.near_plane.ref_distance_m, 10.0);
+  EXPECT_EQ(scene.strategies.near_plane.ref_distance_m, 10.0);
 }
 
 TEST(ResultsTable, BestRowOnlyWhenTheGoalsWereMet) {
   Evaluation none = hand_run("none");
   Evaluation clean = hand_run("clean");
-  clean.summary.near_fragments = 0;
-  clean.summary.camera_hit_fragments = 0;
+  clean.summary.intersections.near_fragments = 0;
+  clean.summary.intersections.camera_hit_fragments = 0;
   const ResultsTable met = results_table(hand_scene(), {none, clean});
   ASSERT_TRUE(met.best_row);
   EXPECT_EQ(*met.best_row, 1u);
@@ -252,8 +253,8 @@ TEST(ResultsTable, BestRowOnlyWhenTheGoalsWereMet) {
   // fragment is no longer best; with less deviation it still loses to one that keeps them all.
   Evaluation faded = clean;
   faded.summary.strategy = "faded";
-  faded.summary.vanished_fragments = 1;
-  faded.summary.deviation_mean_m = 0.0;
+  faded.summary.intersections.vanished_fragments = 1;
+  faded.summary.deviation.mean_m = 0.0;
   const ResultsTable both = results_table(hand_scene(), {none, faded, clean});
   ASSERT_TRUE(both.best_row);
   EXPECT_EQ(*both.best_row, 2u);

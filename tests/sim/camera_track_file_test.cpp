@@ -144,9 +144,10 @@ TEST(CameraTrackFile, ReplayedPathRunReproducesItsCounts) {
   for (std::size_t i = 0; i < path_runs.size(); ++i) {
     const RunSummary& a = path_runs[i].summary;
     const RunSummary& b = track_runs[i].summary;
-    EXPECT_EQ(a.near_fragments, b.near_fragments) << a.strategy;
-    EXPECT_EQ(a.camera_hit_fragments, b.camera_hit_fragments) << a.strategy;
-    EXPECT_EQ(a.near_misses, b.near_misses) << a.strategy;
+    EXPECT_EQ(a.intersections.near_fragments, b.intersections.near_fragments) << a.strategy;
+    EXPECT_EQ(a.intersections.camera_hit_fragments, b.intersections.camera_hit_fragments)
+        << a.strategy;
+    EXPECT_EQ(a.intersections.near_misses, b.intersections.near_misses) << a.strategy;
   }
 }
 

@@ -40,7 +40,7 @@ TEST(SceneFile, ReadsSectionsAndKeys) {
   ASSERT_EQ(s.camera.waypoints_m.size(), 3u);
   EXPECT_EQ(s.camera.waypoints_m[2], Eigen::Vector3d(1, 1, -3));
   EXPECT_EQ(s.camera.fovy_deg, 75.0);
-  EXPECT_EQ(s.edge.predictor, Predictor::kDiscrete);
+  EXPECT_EQ(s.strategies.edge.predictor, Predictor::kDiscrete);
   // Untouched keys keep their defaults.
   EXPECT_EQ(s.object.splits, Scene{}.object.splits);
 }
@@ -57,8 +57,8 @@ TEST(SceneFile, RoundTripIsExact) {
   s.sim.seed = 18446744073709551615ull;
   s.object.centre_m = {0.1, 1.0 / 3.0, -7.25};
   s.camera.waypoints_m = {{0, 1.6, 0}, {0.2, 1.6, -4.0 / 3.0}};
-  s.edge.reach = Reach::kGrowing;
-  s.edge.replan = Replan::kContact;
+  s.strategies.edge.reach = Reach::kGrowing;
+  s.strategies.edge.replan = Replan::kContact;
   const std::string ini = scene_to_ini(s);
   const Scene back = parse_scene(ini, "trip.ini");
   EXPECT_EQ(scene_to_ini(back), ini);
@@ -66,7 +66,7 @@ TEST(SceneFile, RoundTripIsExact) {
   EXPECT_EQ(back.sim.seed, s.sim.seed);
   EXPECT_EQ(back.object.centre_m, s.object.centre_m);
   EXPECT_EQ(back.camera.waypoints_m[1], s.camera.waypoints_m[1]);
-  EXPECT_EQ(back.edge.reach, Reach::kGrowing);
+  EXPECT_EQ(back.strategies.edge.reach, Reach::kGrowing);
 }
 
 TEST(SceneFile, OutOfRangeValueNamesFileLineKeyAndRule) {

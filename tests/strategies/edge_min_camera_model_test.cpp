@@ -191,7 +191,8 @@ TEST(EdgeMinCameraModel, AClearMissIsPushedUnderNoModel) {
         StepOutput out;
         s.step(context(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), frags), out);
         EXPECT_TRUE(out.forces.empty()) << static_cast<int>(m) << " " << turn << " " << z0;
-        EXPECT_TRUE(out.candidates.empty()) << static_cast<int>(m) << " " << turn << " " << z0;
+        EXPECT_TRUE(out.activity.candidates.empty())
+            << static_cast<int>(m) << " " << turn << " " << z0;
       }
     }
   }
@@ -290,7 +291,7 @@ TEST(EdgeMinCameraModel, ACameraAboveTheBoundGetsTheCapNotNaN) {
   s.step(ctx, out);
   ASSERT_EQ(out.forces.size(), 1u);
   EXPECT_TRUE(out.forces[0].force_N.allFinite());
-  EXPECT_EQ(out.capped.size(), 1u);
+  EXPECT_EQ(out.activity.capped.size(), 1u);
 }
 
 TEST(EdgeMinCameraModel, UndeclaredBoundsFallBackToTheParameters) {

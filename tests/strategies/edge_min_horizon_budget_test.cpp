@@ -123,17 +123,17 @@ TEST(EdgeMinBudget, TheCapSolvesTheSoonestToArriveAndDefersTheRest) {
     StepOutput out;
     all.step(context(frags, 0.0, -kInf), out);
     ASSERT_EQ(out.forces.size(), 3u);  // all three need a push without the budget
-    EXPECT_EQ(out.deferred, 0);
+    EXPECT_EQ(out.activity.deferred, 0);
   }
   p.max_solves = 1;
   EdgeMinStrategy s(p);
   s.reset(3);
   StepOutput out;
   s.step(context(frags, 0.0, -kInf), out);
-  EXPECT_EQ(out.deferred, 2);
+  EXPECT_EQ(out.activity.deferred, 2);
   ASSERT_EQ(out.forces.size(), 1u);  // the deferred two were never solved: no last force
   EXPECT_EQ(out.forces[0].fragment, 1);
-  EXPECT_EQ(out.candidates, std::vector<int>{1});
+  EXPECT_EQ(out.activity.candidates, std::vector<int>{1});
 }
 
 // A deferred fragment keeps the force of the last step it was solved, to the bit.
@@ -147,18 +147,18 @@ TEST(EdgeMinBudget, ADeferredFragmentKeepsItsLastForce) {
                                    fragment({0.03, 0.0, -6.0}, {0.0, 0.0, 12.0})};
   StepOutput out;
   s.step(context(frags, 0.0, -kInf), out);  // 1 is sooner: 0 deferred, never solved
-  EXPECT_EQ(out.deferred, 1);
+  EXPECT_EQ(out.activity.deferred, 1);
   EXPECT_EQ(force_on(out, 0), nullptr);
   frags[1].velocity_mps = {0.0, 0.0, -12.0};  // 1 turns away: rejected cheaply, 0 is solved
   out.clear();
   s.step(context(frags, 0.0, -kInf), out);
-  EXPECT_EQ(out.deferred, 0);
+  EXPECT_EQ(out.activity.deferred, 0);
   ASSERT_NE(force_on(out, 0), nullptr);
   const Eigen::Vector3d solved_N = force_on(out, 0)->force_N;
   frags[1].velocity_mps = {0.0, 0.0, 12.0};  // 1 comes back: solved, 0 deferred again
   out.clear();
   s.step(context(frags, 0.0, -kInf), out);
-  EXPECT_EQ(out.deferred, 1);
+  EXPECT_EQ(out.activity.deferred, 1);
   ASSERT_NE(force_on(out, 0), nullptr);
   EXPECT_EQ(force_on(out, 0)->force_N, solved_N);
   EXPECT_NE(force_on(out, 1), nullptr);
@@ -195,8 +195,8 @@ TEST(EdgeMinBudget, ACapNeverReachedChangesNothing) {
           std::memcmp(oa.forces[k].force_N.data(), ob.forces[k].force_N.data(), 3 * sizeof(double)),
           0);
     }
-    EXPECT_EQ(oa.candidates, ob.candidates);
-    EXPECT_EQ(ob.deferred, 0);
+    EXPECT_EQ(oa.activity.candidates, ob.activity.candidates);
+    EXPECT_EQ(ob.activity.deferred, 0);
     pushed += static_cast<int>(oa.forces.size());
     for (FragmentState& f : frags) {
       f.velocity_mps.y() -= 9.81 * kDt;

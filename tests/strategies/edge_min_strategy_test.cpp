@@ -39,7 +39,7 @@ TEST(EdgeMinStrategy, FragmentAtTheLensIsPushedUpJustEnoughAndMisses) {
   // "Just enough" is the constant camera model's promise (the camera here does keep still); the
   // default bounded_accel adds what a camera accelerating upward could take back (below).
   Scene scene = test::single_fragment({0.03, 1.62, -10.0});
-  scene.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
   const Outcome o = run(scene, "edge-min");
   int pushes = 0;
   for (const auto& step : o.rec.steps) {
@@ -50,8 +50,8 @@ TEST(EdgeMinStrategy, FragmentAtTheLensIsPushedUpJustEnoughAndMisses) {
     }
   }
   EXPECT_GT(pushes, 0);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
   // Minimal: when it passes the eye (z = 0) its centre is just above the protected box, within
   // 3 cm of the 0.15 + 0.0866 m it needed.
   EXPECT_NEAR(height_at_eye(o.rec), 0.15 + 0.0866, 0.03);
@@ -63,7 +63,7 @@ TEST(EdgeMinStrategy, BoundedAccelPushesTheFragmentAtTheLensFurtherButBoundedly)
   // such a camera could have closed 0.5 * 20 * 0.13^2 = 0.17 m. So the fragment passes higher
   // than the constant model's 0.2366 m, but by less than that.
   const Outcome o = run(test::single_fragment({0.03, 1.62, -10.0}), "edge-min");
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
   EXPECT_GT(height_at_eye(o.rec), 0.15 + 0.0866);
   EXPECT_LT(height_at_eye(o.rec), 0.15 + 0.0866 + 0.17);
 }
@@ -89,20 +89,20 @@ TEST(EdgeMinStrategy, NeedsFarLessImpulseThanTheThesisForce) {
   const Scene scene = test::single_fragment({0.03, 1.62, -10.0});
   const Outcome min = run(scene, "edge-min");
   const Outcome thesis = run(scene, "edge");
-  EXPECT_LT(min.summary.impulse_Ns, thesis.summary.impulse_Ns);
+  EXPECT_LT(min.summary.activity.impulse_Ns, thesis.summary.activity.impulse_Ns);
 }
 
 TEST(EdgeMinStrategy, TooCloseForTheCapIsReportedUnsaved) {
   // 1.5 m away at 10 m/s with a_max = 1 m/s^2: it needs ~0.24 m in 0.15 s, about 20 m/s^2.
   Scene scene = test::single_fragment({0.03, 1.62, -1.5});
-  scene.edge_min.a_max_mps2 = 1.0;
+  scene.strategies.edge_min.a_max_mps2 = 1.0;
   const Outcome o = run(scene, "edge-min");
-  EXPECT_EQ(o.summary.camera_hit_fragments, 1);
-  EXPECT_EQ(o.summary.unsaved_by_cap, 1);
-  EXPECT_GT(o.summary.capped_forces, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 1);
+  EXPECT_EQ(o.summary.activity.unsaved_by_cap, 1);
+  EXPECT_GT(o.summary.activity.capped_forces, 0);
   // With the default cap it is saved.
-  scene.edge_min.a_max_mps2 = 50.0;
-  EXPECT_EQ(run(scene, "edge-min").summary.camera_hit_fragments, 0);
+  scene.strategies.edge_min.a_max_mps2 = 50.0;
+  EXPECT_EQ(run(scene, "edge-min").summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeMinStrategy, DisplacementPerAccelMatchesSemiImplicitEuler) {

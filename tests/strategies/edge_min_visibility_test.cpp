@@ -25,8 +25,8 @@ constexpr double kDt = 1.0 / 60.0;
 // ways out need top 0.2166 m, bottom 0.2566, right 0.2766, left 0.2966 m of sideways travel.
 Scene at_the_lens(const std::array<double, 4>& weights) {
   Scene scene = test::single_fragment({0.01, 1.62, -10.0});
-  scene.edge_min.camera_model = CameraModel::kConstant;
-  scene.edge_min.edge_weights = weights;
+  scene.strategies.edge_min.camera_model = CameraModel::kConstant;
+  scene.strategies.edge_min.edge_weights = weights;
   return scene;
 }
 
@@ -43,9 +43,9 @@ TEST(EdgeWeights, EqualWeightsTakeTheNearestEdgeTheTop) {
   const auto o = test::run_recorded(at_the_lens({1, 1, 1, 1}), "edge-min");
   EXPECT_GT(total_push(o).y(), 0.0);
   EXPECT_EQ(total_push(o).x(), 0.0);
-  EXPECT_EQ(o.summary.forced_fragments, 1);
-  EXPECT_EQ(o.summary.pushed_exits_top, 1);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.activity.forced_fragments, 1);
+  EXPECT_EQ(o.summary.pushed_exits.top, 1);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeWeights, ForbiddenTopSendsTheFragmentOutThroughTheBottom) {
@@ -54,29 +54,29 @@ TEST(EdgeWeights, ForbiddenTopSendsTheFragmentOutThroughTheBottom) {
   for (const auto& step : o.rec.steps) {
     for (const AppliedForce& f : step.forces) EXPECT_LT(f.force_N.y(), 0.0);
   }
-  EXPECT_EQ(o.summary.pushed_exits_top, 0);
-  EXPECT_EQ(o.summary.pushed_exits_bottom, 1);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.pushed_exits.top, 0);
+  EXPECT_EQ(o.summary.pushed_exits.bottom, 1);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeWeights, OnlyTheSidesSendItRightTheNearerSide) {
   const auto o = test::run_recorded(at_the_lens({0, 0, 1, 1}), "edge-min");
   EXPECT_GT(total_push(o).x(), 0.0);
   EXPECT_EQ(total_push(o).y(), 0.0);
-  EXPECT_EQ(o.summary.pushed_exits_right, 1);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.pushed_exits.right, 1);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeWeights, AHeavierWeightBuysAFartherEdge) {
   // Left needs 0.2966 / 0.2166 = 1.37 times the top's push: a weight of 2 on the left wins.
   const auto o = test::run_recorded(at_the_lens({1, 1, 2, 1}), "edge-min");
   EXPECT_LT(total_push(o).x(), 0.0);
-  EXPECT_EQ(o.summary.pushed_exits_left, 1);
+  EXPECT_EQ(o.summary.pushed_exits.left, 1);
   // And a weight of 1.2 does not (1.37 > 1.2): still the top.
   const auto p = test::run_recorded(at_the_lens({1, 1, 1.2, 1}), "edge-min");
   EXPECT_GT(total_push(p).y(), 0.0);
-  EXPECT_EQ(p.summary.pushed_exits_top, 1);
+  EXPECT_EQ(p.summary.pushed_exits.top, 1);
 }
 
 // Equal weights other than 1 go through the weighted rule, which must then be the least push:
@@ -84,7 +84,7 @@ TEST(EdgeWeights, AHeavierWeightBuysAFartherEdge) {
 TEST(EdgeWeights, EqualWeightsGiveBitIdenticalForces) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
   const auto a = test::run_recorded(scene, "edge-min");
-  scene.edge_min.edge_weights = {2.5, 2.5, 2.5, 2.5};
+  scene.strategies.edge_min.edge_weights = {2.5, 2.5, 2.5, 2.5};
   const auto b = test::run_recorded(scene, "edge-min");
   ASSERT_EQ(a.rec.steps.size(), b.rec.steps.size());
   int forces = 0;
@@ -236,13 +236,13 @@ TEST(CoverMax, MeasuredCentralOcclusionFollowsTheBound) {
   scene.explosion.toward_camera_mps = 4.0;
   scene.sim.duration_s = 1.5;
   const RunSummary none = evaluate(scene, "none", {}).summary;
-  EXPECT_GT(none.central_occlusion_max, 0.9);
-  scene.edge_min.cover_max = 0.5;
+  EXPECT_GT(none.occlusion.central_max, 0.9);
+  scene.strategies.edge_min.cover_max = 0.5;
   const RunSummary bounded = evaluate(scene, "edge-min", {}).summary;
   // Discs for boxes and a 32 x 18 grid for the metric's 80 x 44 pixels: 10 points of tolerance.
-  EXPECT_LE(bounded.central_occlusion_max, 0.6);
-  EXPECT_EQ(bounded.near_fragments, 0);
-  EXPECT_EQ(bounded.camera_hit_fragments, 0);
+  EXPECT_LE(bounded.occlusion.central_max, 0.6);
+  EXPECT_EQ(bounded.intersections.near_fragments, 0);
+  EXPECT_EQ(bounded.intersections.camera_hit_fragments, 0);
 }
 
 }  // namespace

@@ -92,18 +92,18 @@ TEST(FadeParams, EndMustBeNearerThanStartAndEachKeyInRange) {
     return "";
   };
   EXPECT_EQ(error(), "");
-  scene.get<FadeParams>().end_m = 1.0;  // equal to start_m: no ramp
+  scene.strategies.get<FadeParams>().end_m = 1.0;  // equal to start_m: no ramp
   EXPECT_NE(error().find("fade.end_m = 1: must be < fade.start_m = 1"), std::string::npos)
       << error();
-  scene.get<FadeParams>().end_m = 2.0;
+  scene.strategies.get<FadeParams>().end_m = 2.0;
   EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.get<FadeParams>().end_m = -0.1;
+  scene.strategies.get<FadeParams>().end_m = -0.1;
   EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.get<FadeParams>().end_m = 0.0;  // invisible only at the eye: allowed
+  scene.strategies.get<FadeParams>().end_m = 0.0;  // invisible only at the eye: allowed
   EXPECT_EQ(error(), "");
-  scene.get<FadeParams>().start_m = std::numeric_limits<double>::quiet_NaN();
+  scene.strategies.get<FadeParams>().start_m = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
-  scene.get<FadeParams>().start_m = 0.0;
+  scene.strategies.get<FadeParams>().start_m = 0.0;
   EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
 }
 
@@ -124,19 +124,19 @@ class OpacityRecorder final : public RunObserver {
 TEST(FadeStrategy, FragmentFiredAtTheLensIsNoIntersectionButVanishes) {
   const Scene scene = test::single_fragment({0.0, 1.6, -5.0}, 10.0);
   const RunSummary none = evaluate(scene, "none").summary;
-  ASSERT_EQ(none.near_fragments, 1);
-  EXPECT_EQ(none.vanished_fragments, 0);
+  ASSERT_EQ(none.intersections.near_fragments, 1);
+  EXPECT_EQ(none.intersections.vanished_fragments, 0);
   OpacityRecorder rec;
   EvaluationOptions opts;
   opts.extra = {&rec};
   const RunSummary fade = evaluate(scene, "fade", opts).summary;
-  EXPECT_EQ(fade.near_fragments, 0);
-  EXPECT_EQ(fade.near_fragment_steps, 0);
-  EXPECT_EQ(fade.vanished_fragments, 1);
+  EXPECT_EQ(fade.intersections.near_fragments, 0);
+  EXPECT_EQ(fade.intersections.near_fragment_steps, 0);
+  EXPECT_EQ(fade.intersections.vanished_fragments, 1);
   // Physics untouched: what the body meets is the same, and no force was applied.
-  EXPECT_EQ(fade.camera_hit_fragments, none.camera_hit_fragments);
-  EXPECT_EQ(fade.impulse_Ns, 0.0);
-  EXPECT_EQ(fade.forced_fragments, 0);
+  EXPECT_EQ(fade.intersections.camera_hit_fragments, none.intersections.camera_hit_fragments);
+  EXPECT_EQ(fade.activity.impulse_Ns, 0.0);
+  EXPECT_EQ(fade.activity.forced_fragments, 0);
   // Step 0 is drawn before the strategy speaks (opaque); every later frame has an opacity.
   ASSERT_EQ(rec.steps.size(), static_cast<std::size_t>(scene.step_count()) + 1);
   EXPECT_TRUE(rec.steps[0].empty());
@@ -168,8 +168,8 @@ TEST(FadeStrategy, FragmentThatFadesOutsideTheViewHasNotVanished) {
     if (!step.empty()) lowest = std::min(lowest, step[0]);
   }
   EXPECT_NEAR(lowest, (0.55 - 0.25) / 0.75, 0.01);  // it did fade below half
-  EXPECT_EQ(fade.vanished_fragments, 0);
-  EXPECT_EQ(fade.near_fragments, 0);
+  EXPECT_EQ(fade.intersections.vanished_fragments, 0);
+  EXPECT_EQ(fade.intersections.near_fragments, 0);
 }
 
 // Far from any fragment the fade changes nothing: every number of `none` but the strategy's name.
@@ -178,11 +178,11 @@ TEST(FadeStrategy, DistantFragmentRunsAsNone) {
   RunSummary none = evaluate(scene, "none").summary;
   RunSummary fade = evaluate(scene, "fade").summary;
   none.strategy = fade.strategy;
-  none.physics_ms_median = fade.physics_ms_median = 0.0;
-  none.physics_ms_p95 = fade.physics_ms_p95 = 0.0;
-  none.strategy_ms_median = fade.strategy_ms_median = 0.0;
-  none.strategy_ms_p95 = fade.strategy_ms_p95 = 0.0;
-  none.wall_s = fade.wall_s = 0.0;
+  none.cost.physics_ms_median = fade.cost.physics_ms_median = 0.0;
+  none.cost.physics_ms_p95 = fade.cost.physics_ms_p95 = 0.0;
+  none.cost.strategy_ms_median = fade.cost.strategy_ms_median = 0.0;
+  none.cost.strategy_ms_p95 = fade.cost.strategy_ms_p95 = 0.0;
+  none.cost.wall_s = fade.cost.wall_s = 0.0;
   EXPECT_EQ(summary_fields(fade), summary_fields(none));
 }
 

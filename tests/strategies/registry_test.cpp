@@ -43,10 +43,9 @@ class ProbeStrategy : public Strategy {
 // The tool's table plus the one line that adds the probe.
 StrategyTable with_probe() {
   StrategyTable table = strategy_table();
-  table.push_back(strategy_entry("probe", "a test's strategy", probe_param_spec(),
-                                 [](const ProbeParams& p, const StrategyCamera&) {
-                                   return std::make_unique<ProbeStrategy>(p);
-                                 }));
+  table.push_back(strategy_entry(
+      "probe", "a test's strategy", probe_param_spec(),
+      [](const ProbeParams& p, const FrustumDef&) { return std::make_unique<ProbeStrategy>(p); }));
   return table;
 }
 
@@ -65,9 +64,9 @@ TEST(Registry, OneEntryAddsAStrategyToParserHelpAndConfigIni) {
 
   // The parser: file and command line.
   const Scene s = parse_scene("[probe]\ngain_mps2 = 2.5\n", "probe.ini", {}, table);
-  EXPECT_EQ(s.get<ProbeParams>().gain_mps2, 2.5);
+  EXPECT_EQ(s.strategies.get<ProbeParams>().gain_mps2, 2.5);
   const Scene o = parse_scene("", "", {{"probe.gain_mps2", "7"}}, table);
-  EXPECT_EQ(o.get<ProbeParams>().gain_mps2, 7.0);
+  EXPECT_EQ(o.strategies.get<ProbeParams>().gain_mps2, 7.0);
 
   // --help: the key with its unit and default, and the strategy in the list.
   const auto options = scene_options(table);
@@ -90,12 +89,12 @@ TEST(Registry, OneEntryAddsAStrategyToParserHelpAndConfigIni) {
             "probe.ini:2: probe.gain_mps2 = '11': must be in [0, 10]");
   EXPECT_EQ(parse_error("", {{"probe.gain_mps2", "nan"}}, table),
             "--probe.gain_mps2: probe.gain_mps2 = 'nan': must be finite");
-  const auto made = make_strategy("probe", s, strategy_camera(s), table);
+  const auto made = make_strategy("probe", s.strategies, s.camera.frustum_def(), table);
   EXPECT_EQ(dynamic_cast<const ProbeStrategy&>(*made).params().gain_mps2, 2.5);
   Scene bad = s;
-  bad.get<ProbeParams>().gain_mps2 = -1.0;
+  bad.strategies.get<ProbeParams>().gain_mps2 = -1.0;
   try {
-    make_strategy("probe", bad, strategy_camera(bad), table);
+    make_strategy("probe", bad.strategies, bad.camera.frustum_def(), table);
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "probe.gain_mps2 = -1: must be in [0, 10]");
@@ -139,20 +138,61 @@ std::string make_error(const Scene& scene, const std::string& name) {
   return "";
 }
 
+std::string validate_error(const Scene& scene, const std::string& name) {
+  try {
+    validate_strategy_settings(name, scene);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Validation is the factory's checks without the making: the same one-line errors, no strategy.
+TEST(Registry, ValidationChecksWithoutMakingTheStrategy) {
+  static int made = 0;
+  StrategyTable table = strategy_table();
+  table.push_back(strategy_entry("probe", "a test's strategy", probe_param_spec(),
+                                 [](const ProbeParams& p, const FrustumDef&) {
+                                   ++made;
+                                   return std::make_unique<ProbeStrategy>(p);
+                                 }));
+  Scene s;
+  const FrustumDef frustum = s.camera.frustum_def();
+  validate_strategy_settings("probe", s.strategies, frustum, table);
+  EXPECT_EQ(made, 0);
+  make_strategy("probe", s.strategies, frustum, table);
+  EXPECT_EQ(made, 1);
+  s.strategies.get<ProbeParams>().gain_mps2 = -1.0;
+  EXPECT_THROW(validate_strategy_settings("probe", s.strategies, frustum, table), InputError);
+  EXPECT_EQ(made, 1);
+
+  Scene bad;
+  bad.strategies.edge_min.max_solves = -1;
+  bad.strategies.wall.thickness_m = 2.0;
+  bad.strategies.near_plane.min_near_m = 0.5;
+  for (const char* name : {"edge-min", "wall", "near-plane", "edge", "magic"}) {
+    EXPECT_EQ(validate_error(bad, name), make_error(bad, name)) << name;
+  }
+  EXPECT_EQ(validate_error(bad, "magic"),
+            "unknown strategy 'magic' (known: none, wall, deflect-all, near-plane, edge, "
+            "edge-min, fade)");
+  EXPECT_EQ(validate_error(bad, "edge"), "");
+}
+
 TEST(Registry, ParametersSetInCodeAreCheckedByTheirKeys) {
   const double inf = std::numeric_limits<double>::infinity();
   Scene s;
-  s.edge_min.camera_accel_mps2 = inf;
+  s.strategies.edge_min.camera_accel_mps2 = inf;
   EXPECT_EQ(make_error(s, "edge-min"), "edge-min.camera_accel_mps2 = inf: must be finite");
   s = {};
-  s.edge_min.max_solves = -1;
+  s.strategies.edge_min.max_solves = -1;
   EXPECT_EQ(make_error(s, "edge-min"),
             "edge-min.max_solves = -1: must be a whole number in [0, 100000000]");
   s = {};
-  s.edge.predictor = static_cast<Predictor>(5);
+  s.strategies.edge.predictor = static_cast<Predictor>(5);
   EXPECT_EQ(make_error(s, "edge"), "edge.predictor = ?: expected thesis | discrete");
   s = {};
-  s.deflect_all.range_m = -2.0;
+  s.strategies.deflect_all.range_m = -2.0;
   EXPECT_EQ(make_error(s, "deflect-all"), "deflect-all.range_m = -2: must be in [0, 1e+06]");
   // Only the named strategy's parameters are its business.
   EXPECT_EQ(make_error(s, "edge"), "");
@@ -160,13 +200,13 @@ TEST(Registry, ParametersSetInCodeAreCheckedByTheirKeys) {
 
 TEST(Registry, RulesAcrossKeysAreTheSameFromAFileAndFromCode) {
   Scene s;
-  s.wall.thickness_m = 2.0;
+  s.strategies.wall.thickness_m = 2.0;
   const std::string rule =
       "wall.thickness_m = 2: must be < 2 wall.distance_m, so the wall stays in front of the eye";
   EXPECT_EQ(make_error(s, "wall"), rule);
   EXPECT_EQ(parse_error("[wall]\nthickness_m = 2\n", {}, strategy_table()), rule);
   s = {};
-  s.near_plane.min_near_m = 0.5;
+  s.strategies.near_plane.min_near_m = 0.5;
   EXPECT_EQ(make_error(s, "near-plane"),
             "near-plane.min_near_m = 0.5: must be <= camera.near_m = 0.1");
 }

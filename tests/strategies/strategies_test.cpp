@@ -28,8 +28,8 @@ const Eigen::Vector3d kBeside{2.03, 1.62, -10.0};
 
 TEST(NoneStrategy, FragmentAtTheLensHitsAndFliesStraight) {
   const Outcome o = run(test::single_fragment(kAtLens), "none");
-  EXPECT_EQ(o.summary.near_fragments, 1);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 1);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 1);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 1);
   for (const auto& step : o.rec.steps) {
     EXPECT_TRUE(step.forces.empty());
     // No gravity, no contact: x and y never change, the speed stays 10 m/s.
@@ -56,8 +56,8 @@ TEST(EdgeStrategy, FragmentAtTheLensIsPushedToTheNearestEdgeAndMisses) {
     }
   }
   EXPECT_GT(pushes, 0);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
@@ -71,14 +71,14 @@ TEST(EdgeStrategy, FragmentNearTheRightEdgeIsPushedRight) {
     }
   }
   EXPECT_GT(pushes, 0);
-  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
 }
 
 TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
   // The thesis ball: V_c (t_G - t) + radii = 1 m/s * 1.5 s + 0.27 m < 2 m, with t_G the cap of
   // 1.5 s (zero gravity: the path never comes down; the default 3 s cap would give 3.27 m).
   Scene scene = test::single_fragment(kBeside);
-  scene.edge.horizon_cap_s = 1.5;
+  scene.strategies.edge.horizon_cap_s = 1.5;
   const Outcome o = run(scene, "edge");
   for (const auto& step : o.rec.steps) {
     EXPECT_TRUE(step.candidates.empty());
@@ -88,7 +88,7 @@ TEST(EdgeStrategy, FragmentTwoMetresAsideIsNeverACandidate) {
 
 TEST(EdgeStrategy, ZeroGainReproducesNoneExactly) {
   Scene scene = test::single_fragment(kAtLens);
-  scene.edge.k = 0.0;
+  scene.strategies.edge.k = 0.0;
   const Outcome edge = run(scene, "edge");
   const Outcome none = run(scene, "none");
   ASSERT_EQ(edge.rec.steps.size(), none.rec.steps.size());
@@ -99,8 +99,8 @@ TEST(EdgeStrategy, ZeroGainReproducesNoneExactly) {
 
 TEST(EdgeStrategy, AccelerationCapHolds) {
   Scene scene = test::single_fragment(kAtLens);
-  scene.edge.k = 1e9;
-  scene.edge.a_max_mps2 = 50.0;
+  scene.strategies.edge.k = 1e9;
+  scene.strategies.edge.a_max_mps2 = 50.0;
   const Outcome o = run(scene, "edge");
   const double mass_kg = 600.0 * 0.1 * 0.1 * 0.1;
   for (const auto& step : o.rec.steps) {
@@ -119,8 +119,8 @@ TEST(WallStrategy, IncomingFragmentBouncesOffTheWall) {
   for (const auto& step : o.rec.steps)
     closest_m = std::min(closest_m, -step.fragments[0].position_m.z());
   EXPECT_GT(closest_m, 0.5);
-  EXPECT_EQ(o.summary.near_fragments, 0);
-  EXPECT_EQ(o.summary.camera_hit_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
 TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
@@ -129,15 +129,15 @@ TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
   // (half width 0.0103 m) lets it pass uncut.
   Scene scene = test::single_fragment({0.13, 1.6, -10.0});
   scene.camera.body_size_m = {0.1, 0.1, 0.1};
-  EXPECT_EQ(run(scene, "none").summary.near_fragments, 1);
+  EXPECT_EQ(run(scene, "none").summary.intersections.near_fragments, 1);
   const Outcome o = run(scene, "near-plane");
   double min_near = 1.0;
   for (const auto& step : o.rec.steps) min_near = std::min(min_near, step.near_m);
   EXPECT_LT(min_near, 0.1);
-  EXPECT_GE(min_near, scene.near_plane.min_near_m);
+  EXPECT_GE(min_near, scene.strategies.near_plane.min_near_m);
   EXPECT_EQ(o.rec.steps.front().near_m, 0.1);
   EXPECT_EQ(o.rec.steps.back().near_m, 0.1);  // it has flown past
-  EXPECT_EQ(o.summary.near_fragments, 0);
+  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
 }
 
 TEST(NearPlaneStrategy, DepthStep) {
@@ -174,7 +174,7 @@ TEST(Registry, UnknownNameAndBadParameterAreNamed) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("magic"), std::string::npos);
   }
-  scene.edge.k = -1.0;
+  scene.strategies.edge.k = -1.0;
   try {
     make_strategy("edge", scene);
     FAIL() << "no exception";
@@ -201,7 +201,7 @@ Scene bouncing_fragment(Replan replan) {
   s.ground.restitution = 0.5;
   s.ground.friction = 0.0;  // keeps its speed toward the camera through the bounce
   s.sim.duration_s = 2.0;
-  s.edge.replan = replan;
+  s.strategies.edge.replan = replan;
   return s;
 }
 

@@ -48,11 +48,11 @@ void HealthObserver::begin(const RunInfo& info, const StepSnapshot& initial) {
 
   applies_forces_ = true;
   if (info.strategy == "edge") {
-    force_cap_mps2_ = scene_->edge.a_max_mps2;
+    force_cap_mps2_ = scene_->strategies.edge.a_max_mps2;
   } else if (info.strategy == "edge-min") {
-    force_cap_mps2_ = scene_->edge_min.a_max_mps2;
+    force_cap_mps2_ = scene_->strategies.edge_min.a_max_mps2;
   } else if (info.strategy == "deflect-all") {
-    force_cap_mps2_ = scene_->deflect_all.accel_mps2;
+    force_cap_mps2_ = scene_->strategies.deflect_all.accel_mps2;
   } else {
     force_cap_mps2_ = 0.0;
     applies_forces_ = false;

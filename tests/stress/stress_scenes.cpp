@@ -236,7 +236,7 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
       cam.player_accel_mps2 = s.player_accel_mps2;
       cam.turn_rate_degps = s.turn_rate_degps;
       sc.explosion.aim = ExplosionAim::kPresent;
-      sc.edge_min.camera_model = CameraModel::kBoundedAccel;
+      sc.strategies.edge_min.camera_model = CameraModel::kBoundedAccel;
       break;
     case CameraMotion::kTrack: {
       cam.mode = CameraMode::kTrack;
@@ -253,20 +253,20 @@ StressCase build(const Spec& s, const Budget& budget, const std::string& id, std
     }
   }
 
-  sc.wall.distance_m = s.wall_distance_m;
-  sc.wall.thickness_m = std::min(s.wall_thickness_m, 1.5 * s.wall_distance_m);
-  sc.wall.restitution = s.wall_restitution;
-  sc.deflect_all.accel_mps2 = s.deflect_accel_mps2;
-  sc.deflect_all.range_m = s.deflect_range_m;
-  sc.near_plane.min_near_m = std::min(sc.near_plane.min_near_m, cam.near_m);
-  sc.edge.k = s.edge_k;
-  sc.edge.a_max_mps2 = s.edge_a_max_mps2;
-  sc.edge.predictor = s.predictor;
-  sc.edge.reach = s.reach;
-  sc.edge.horizon = s.horizon;
-  sc.edge.replan = s.replan;
-  sc.edge_min.a_max_mps2 = s.edge_min_a_max_mps2;
-  sc.edge_min.margin_m = s.edge_min_margin_m;
+  sc.strategies.wall.distance_m = s.wall_distance_m;
+  sc.strategies.wall.thickness_m = std::min(s.wall_thickness_m, 1.5 * s.wall_distance_m);
+  sc.strategies.wall.restitution = s.wall_restitution;
+  sc.strategies.deflect_all.accel_mps2 = s.deflect_accel_mps2;
+  sc.strategies.deflect_all.range_m = s.deflect_range_m;
+  sc.strategies.near_plane.min_near_m = std::min(sc.strategies.near_plane.min_near_m, cam.near_m);
+  sc.strategies.edge.k = s.edge_k;
+  sc.strategies.edge.a_max_mps2 = s.edge_a_max_mps2;
+  sc.strategies.edge.predictor = s.predictor;
+  sc.strategies.edge.reach = s.reach;
+  sc.strategies.edge.horizon = s.horizon;
+  sc.strategies.edge.replan = s.replan;
+  sc.strategies.edge_min.a_max_mps2 = s.edge_min_a_max_mps2;
+  sc.strategies.edge_min.margin_m = s.edge_min_margin_m;
 
   StressCase c;
   c.id = id;
@@ -345,8 +345,8 @@ std::vector<StressCase> corner_cases(const Budget& budget) {
   auto add = [&](const Spec& s) { out.push_back(build(s, budget, "corner/" + s.name, 1)); };
 
   Spec s;
-  // docs/method.md section 7: a fragment spawned inside the camera with zero velocity, zero gravity,
-  // the smallest step.
+  // docs/method.md section 7: a fragment spawned inside the camera with zero velocity, zero
+  // gravity, the smallest step.
   s = Spec{};
   s.name = "one-fragment-inside-camera-at-rest";
   s.splits = 1;

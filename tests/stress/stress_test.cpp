@@ -1,5 +1,5 @@
-// Numerical stress (project issue 5, docs/method.md section 7): every strategy on seeded scenes at the
-// extremes must keep every number finite, ODE quiet, forces within their caps and no fragment
+// Numerical stress (project issue 5, docs/method.md section 7): every strategy on seeded scenes at
+// the extremes must keep every number finite, ODE quiet, forces within their caps and no fragment
 // above its energy budget (health_observer.hpp); and the default scene run for a minute must come
 // to rest on the ground and stay there.
 //
@@ -82,23 +82,23 @@ const auto* const kPrintWorst = ::testing::AddGlobalTestEnvironment(new PrintWor
 // Every floating-point number of a run summary, by name.
 std::vector<std::pair<const char*, double>> summary_numbers(const RunSummary& s) {
   return {{"dt_s", s.dt_s},
-          {"deviation_mean_m", s.deviation_mean_m},
-          {"deviation_max_m", s.deviation_max_m},
-          {"deviated_share", s.deviated_share},
-          {"occlusion_mean", s.occlusion_mean},
-          {"occlusion_max", s.occlusion_max},
-          {"central_occlusion_mean", s.central_occlusion_mean},
-          {"central_occlusion_max", s.central_occlusion_max},
-          {"single_fragment_occlusion_max", s.single_fragment_occlusion_max},
-          {"impulse_Ns", s.impulse_Ns},
-          {"max_accel_mps2", s.max_accel_mps2},
-          {"min_near_m", s.min_near_m},
-          {"depth_step_m", s.depth_step_m},
-          {"physics_ms_median", s.physics_ms_median},
-          {"physics_ms_p95", s.physics_ms_p95},
-          {"strategy_ms_median", s.strategy_ms_median},
-          {"strategy_ms_p95", s.strategy_ms_p95},
-          {"wall_s", s.wall_s}};
+          {"deviation_mean_m", s.deviation.mean_m},
+          {"deviation_max_m", s.deviation.max_m},
+          {"deviated_share", s.deviation.deviated_share},
+          {"occlusion_mean", s.occlusion.mean},
+          {"occlusion_max", s.occlusion.max},
+          {"central_occlusion_mean", s.occlusion.central_mean},
+          {"central_occlusion_max", s.occlusion.central_max},
+          {"single_fragment_occlusion_max", s.occlusion.single_fragment_max},
+          {"impulse_Ns", s.activity.impulse_Ns},
+          {"max_accel_mps2", s.activity.max_accel_mps2},
+          {"min_near_m", s.activity.min_near_m},
+          {"depth_step_m", s.activity.depth_step_m},
+          {"physics_ms_median", s.cost.physics_ms_median},
+          {"physics_ms_p95", s.cost.physics_ms_p95},
+          {"strategy_ms_median", s.cost.strategy_ms_median},
+          {"strategy_ms_p95", s.cost.strategy_ms_p95},
+          {"wall_s", s.cost.wall_s}};
 }
 
 std::string case_name(const ::testing::TestParamInfo<StressCase>& info) {
@@ -131,11 +131,11 @@ TEST_P(StressMatrix, EveryStrategyStaysFiniteQuietAndWithinItsEnergy) {
     const std::string where = c.id + " " + s.strategy;
     SCOPED_TRACE(where);
 
-    EXPECT_EQ(s.nonfinite_fragments, 0) << "fragments frozen after a non-finite state";
+    EXPECT_EQ(s.health.nonfinite_fragments, 0) << "fragments frozen after a non-finite state";
     EXPECT_EQ(h.nonfinite_states, 0);
     EXPECT_EQ(h.nonfinite_forces, 0);
     EXPECT_EQ(h.nonfinite_near, 0);
-    EXPECT_EQ(s.ode_messages, 0) << "ODE printed warnings";
+    EXPECT_EQ(s.health.ode_messages, 0) << "ODE printed warnings";
     for (const auto& [name, value] : summary_numbers(s)) {
       EXPECT_TRUE(std::isfinite(value)) << "summary " << name << " = " << value;
       worst().offer(std::string("largest |summary ") + name + "|", std::abs(value), where);
@@ -153,8 +153,8 @@ TEST_P(StressMatrix, EveryStrategyStaysFiniteQuietAndWithinItsEnergy) {
           << " exceeds their total budget (ratio " << h.max_total_energy_ratio << ")";
     }
 
-    worst().offer("ODE messages in a run", static_cast<double>(s.ode_messages), where);
-    worst().offer("non-finite fragments in a run", s.nonfinite_fragments, where);
+    worst().offer("ODE messages in a run", static_cast<double>(s.health.ode_messages), where);
+    worst().offer("non-finite fragments in a run", s.health.nonfinite_fragments, where);
     worst().offer("largest |position component| (m)", h.max_abs_position_m, where);
     worst().offer("largest speed (m/s)", h.max_speed_mps, where);
     worst().offer("largest applied force (N)", h.max_force_N, where);
@@ -174,7 +174,7 @@ TEST_P(StressMatrix, EveryStrategyStaysFiniteQuietAndWithinItsEnergy) {
     }
     worst().offer("largest energy/(explosion + work), no contact allowance (not checked)",
                   h.max_no_contact_ratio, where);
-    worst().offer("longest run (s)", s.wall_s, where);
+    worst().offer("longest run (s)", s.cost.wall_s, where);
   }
   if (HasFailure()) {
     std::cout << "stress case " << c.id << " failed (seed " << c.seed << ", scale "

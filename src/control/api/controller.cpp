@@ -17,6 +17,7 @@
 #include "api/def_mapping.hpp"
 #include "api/id_table.hpp"
 #include "fragsim/control.h"
+#include "geometry/frustum.hpp"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
@@ -470,14 +471,14 @@ fragsim_status fragsim_controller::step(const fragsim_step_input& in, const Sour
     for (std::size_t i = 0; i < n; ++i) last_ids[i] = src.id(i);
   }
   if (stats != nullptr) {
-    stats->candidates = static_cast<std::int32_t>(out.candidates.size());
+    stats->candidates = static_cast<std::int32_t>(out.activity.candidates.size());
     stats->pushed = static_cast<std::int32_t>(out.forces.size());
-    stats->capped = static_cast<std::int32_t>(out.capped.size());
-    stats->guarded = out.guarded;
+    stats->capped = static_cast<std::int32_t>(out.activity.capped.size());
+    stats->guarded = out.activity.guarded;
     stats->new_ids = new_ids;
     stats->dropped_ids = dropped_ids;
-    stats->deferred = out.deferred;
-    stats->rejected_cheaply = out.rejected_cheaply;
+    stats->deferred = out.activity.deferred;
+    stats->rejected_cheaply = out.activity.rejected_cheaply;
   }
   error.clear();
   return FRAGSIM_OK;
@@ -555,10 +556,11 @@ FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
   c.right = {1.0, 0.0, 0.0};
   c.up = {0.0, 1.0, 0.0};
   c.forward = {0.0, 0.0, -1.0};
-  c.fovy_deg = 60.0;
-  c.aspect = 16.0 / 9.0;
-  c.near_m = 0.1;
-  c.far_m = 500.0;
+  // The tool's default frustum, from its one home (geometry/frustum.hpp).
+  c.fovy_deg = fragsim::kDefaultFrustum.fovy_deg;
+  c.aspect = fragsim::kDefaultFrustum.aspect;
+  c.near_m = fragsim::kDefaultFrustum.near_m;
+  c.far_m = fragsim::kDefaultFrustum.far_m;
   c.body_half_m = {0.15, 0.1, 0.15};
   c.max_speed_mps = 3.0;
   c.max_accel_mps2 = 0.0;  // not declared

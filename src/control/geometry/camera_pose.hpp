@@ -9,15 +9,17 @@
 
 namespace fragsim {
 
+// The camera at one instant, frustum included: what strategies, metrics and the renderer see (a
+// scene's CameraDef says how it moves; a CameraSample is a recorded instant, without frustum).
 struct CameraPose {
   Eigen::Vector3d eye_m{0, 0, 0};
   Eigen::Vector3d right{1, 0, 0};     // r: screen x
   Eigen::Vector3d up{0, 1, 0};        // u: screen y
   Eigen::Vector3d forward{0, 0, -1};  // f: view direction
-  double fovy_deg = 60.0;
-  double aspect = 16.0 / 9.0;
-  double near_m = 0.1;
-  double far_m = 500.0;
+  double fovy_deg = kDefaultFrustum.fovy_deg;
+  double aspect = kDefaultFrustum.aspect;
+  double near_m = kDefaultFrustum.near_m;
+  double far_m = kDefaultFrustum.far_m;
 
   Frustum frustum() const { return Frustum(fovy_deg, aspect, near_m, far_m); }
 
@@ -48,7 +50,8 @@ struct CameraPose {
 };
 
 // One timed sample of a camera's motion: where the eye is and which way it looks. A recorded
-// track (camera.csv, an engine's export) and the player model are lists of these.
+// track (camera.csv, an engine's export) and the player model are lists of these; the frustum is
+// the scene's, so it is not here.
 struct CameraSample {
   double t_s = 0.0;
   Eigen::Vector3d eye_m{0, 0, 0};

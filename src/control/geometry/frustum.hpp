@@ -17,6 +17,19 @@ inline double tan_half_fovy(double fovy_deg) {
   return std::tan(0.5 * fovy_deg * kPi / 180.0);
 }
 
+// A frustum as settings state it, and the one home of its defaults: a scene's camera
+// (sim/scene.hpp), a camera pose (camera_pose.hpp), the strategies' parameter rules and the
+// C API's default camera all start from these.
+struct FrustumDef {
+  double fovy_deg = 60.0;  // vertical field of view
+  double aspect = 16.0 / 9.0;
+  double near_m = 0.1;
+  double far_m = 500.0;
+
+  bool operator==(const FrustumDef&) const = default;
+};
+inline constexpr FrustumDef kDefaultFrustum{};
+
 // A symmetric perspective frustum with its apex at the eye, in camera coordinates.
 class Frustum {
  public:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/time_to_plane.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/lanes.hpp"
 
@@ -17,27 +18,9 @@ BallisticPath predicted_path(const FragmentState& f, const Eigen::Vector3d& g_mp
 
 double time_to_horizon(const BallisticPath& path, double y_ref_m, double fallback_s) {
   if (!std::isfinite(y_ref_m)) return fallback_s;  // horizon = ground without a ground
-  // y(tau) - y_ref = a tau^2 + b tau + c with a = g_y / 2.
-  const AxisQuadratic y = path.axis(1);
-  const double a = y.c2;
-  const double b = y.c1;
-  const double c = y.c0 - y_ref_m;
-  double later = -1.0;
-  if (a != 0.0) {
-    const double disc = b * b - 4.0 * a * c;
-    if (disc >= 0.0) {
-      // Stable roots: q = -(b + sign(b) sqrt(disc)) / 2, roots q / a and c / q.
-      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      const double r1 = q / a;
-      const double r2 = q != 0.0 ? c / q : r1;
-      later = std::max(r1, r2);
-    }
-  } else if (b != 0.0) {
-    later = -c / b;
-  }
-  // It must come down through y_ref (downward at that time), and not in the past.
-  if (later <= 0.0 || !(b + 2.0 * a * later < 0.0)) return fallback_s;
-  return later;
+  AxisQuadratic height = path.axis(1);
+  height.c0 -= y_ref_m;
+  return time_to_plane_s(height).value_or(fallback_s);
 }
 
 Quartic ball_contact_quartic(const BallisticPath& path, const Eigen::Vector3d& centre_m,
@@ -129,23 +112,11 @@ ContactPrediction ContactQuery::predict(const FragmentState& f) const {
 
 namespace {
 
-// time_to_horizon then the cap, for two paths at once, operation for operation (so with the same
-// results): y(tau) - y_ref = a tau^2 + b tau + c, with a the same for both.
+// time_to_horizon then the cap, for two paths at once (the same formula, so the same results):
+// y(tau) - y_ref = a tau^2 + b tau + c, with a the same for both.
 lanes::Lanes capped_time_to_horizon(double a, lanes::Lanes b, lanes::Lanes c, double remaining_s) {
-  using lanes::Lanes;
-  const Lanes fallback = lanes::broadcast(remaining_s);
-  Lanes later;
-  if (a != 0.0) {
-    const Lanes disc = b * b - 4.0 * a * c;
-    const Lanes q = -0.5 * (b + lanes::copysign(lanes::sqrt(disc), b));
-    const Lanes r1 = q / a;
-    const Lanes r2 = lanes::select(lanes::ne(q, Lanes{}), c / q, r1);
-    later = lanes::select(lanes::ge(disc, Lanes{}), lanes::max(r1, r2), lanes::broadcast(-1.0));
-  } else {
-    later = lanes::select(lanes::ne(b, Lanes{}), -c / b, lanes::broadcast(-1.0));
-  }
-  const lanes::Mask gone = lanes::le(later, Lanes{}) | ~lanes::lt(b + 2.0 * a * later, Lanes{});
-  return lanes::min(lanes::select(gone, fallback, later), fallback);
+  const lanes::Lanes fallback = lanes::broadcast(remaining_s);
+  return lanes::min(time_to_plane_s<lanes::LaneOps>(a, b, c, fallback), fallback);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "geometry/first_root.hpp"
 #include "geometry/parabola.hpp"
+#include "geometry/time_to_plane.hpp"
 #include "strategies/force_cap.hpp"
 
 namespace fragsim {
@@ -320,19 +322,7 @@ double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half
   const double a = half_gy_mps2;
   const double b = vy_mps;
   const double c = y0_m - ground_m;
-  if (a != 0.0) {
-    const double disc = b * b - 4.0 * a * c;
-    if (disc >= 0.0) {
-      // Stable roots (as time_to_horizon): q = -(b + sign(b) sqrt(disc)) / 2, q / a and c / q.
-      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-      const double r1 = q / a;
-      const double r2 = q != 0.0 ? c / q : r1;
-      const double later = std::max(r1, r2);
-      if (later > 0.0 && b + 2.0 * a * later < 0.0) return later;
-    }
-  } else if (b < 0.0 && c > 0.0) {
-    return -c / b;
-  }
+  if (const std::optional<double> t = time_to_plane_s(AxisQuadratic{c, b, a})) return *t;
   // No downward crossing ahead. Above the ground: it never comes down. At or below it (resting,
   // or sunk into it by the contact's softness): the path rises for good (gravity off or up) or
   // stays underground, where nothing it predicts is real.
@@ -455,7 +445,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const std::span<const char> clears = clearance_.clears();
   const std::span<const char> grown_clears = clearance_.grown_clears();
   const std::span<const std::int32_t> unsettled = clearance_.unsettled();
-  out.rejected_cheaply = static_cast<int>(n - unsettled.size());
+  out.activity.rejected_cheaply = static_cast<int>(n - unsettled.size());
 
   // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
   // back (the camera's forward axis tilted toward the ground can).
@@ -500,7 +490,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       for (std::size_t k = cap; k < queue_.size(); ++k) {
         deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
       }
-      out.deferred = static_cast<int>(queue_.size() - cap);
+      out.activity.deferred = static_cast<int>(queue_.size() - cap);
     }
   }
 
@@ -532,7 +522,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                                                                  : 2.0 * params_.a_max_mps2 + 1.0;
     if (!robust) {
       if (!nominal.threat) return;
-      out.candidates.push_back(static_cast<int>(i));
+      out.activity.candidates.push_back(static_cast<int>(i));
       if (a_nominal <= 0.0) return;
       apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
                    params_.a_max_mps2);
@@ -555,7 +545,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     const WorstCase wc =
         grown_clear ? WorstCase{} : worst_case(cons, slabs, own_look_s, ctx.dt_s, 0.0);
     if (!nominal.threat && !wc.threat) return;
-    out.candidates.push_back(static_cast<int>(i));
+    out.activity.candidates.push_back(static_cast<int>(i));
     if (wc.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
       // moving the fragment by a dt t along its axis; from the next step on, a push of at most

@@ -77,7 +77,7 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     candidate_[i] = pred.candidate ? 1 : 0;
     predicted_[i] = candidate_[i];
     if (!pred.candidate) continue;
-    out.candidates.push_back(static_cast<int>(i));
+    out.activity.candidates.push_back(static_cast<int>(i));
     const FragmentState& f = ctx.fragments[i];
 
     // Direction: toward the near rectangle's edge nearest to where the path will cross it; a
@@ -92,7 +92,7 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     const double rel_speed_mps = (f.velocity_mps - ctx.camera_velocity_mps).norm();
     double dist_m = (f.position_m - cam.eye_m).norm();
     double lead_s = pred.t_contact_s;
-    if (lead_s < ctx.dt_s || dist_m < contact_radius_m) ++out.guarded;
+    if (lead_s < ctx.dt_s || dist_m < contact_radius_m) ++out.activity.guarded;
     lead_s = std::max(lead_s, ctx.dt_s);
     dist_m = std::max(dist_m, contact_radius_m);
     const double force_N = params_.k * rel_speed_mps / (dist_m * dist_m * lead_s);

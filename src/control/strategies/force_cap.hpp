@@ -10,12 +10,12 @@
 namespace fragsim {
 
 // Adds `force_N` on `fragment` to `out`, scaled down to mass_kg * a_max_mps2 if above; counts the
-// fragment in out.capped. A non-finite force (a singular spot that escaped its guard) is dropped
-// and counted in out.guarded.
+// fragment in out.activity.capped. A non-finite force (a singular spot that escaped its guard) is
+// dropped and counted in out.activity.guarded.
 inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& force_N,
                          double mass_kg, double a_max_mps2) {
   if (!force_N.allFinite()) {
-    ++out.guarded;
+    ++out.activity.guarded;
     return;
   }
   const double limit_N = mass_kg * a_max_mps2;
@@ -23,7 +23,7 @@ inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& f
   if (norm_N == 0.0) return;
   // A force built as exactly m a_max (deflect-all) must not count as capped through rounding.
   if (norm_N > limit_N * (1.0 + 1e-12)) {
-    out.capped.push_back(fragment);
+    out.activity.capped.push_back(fragment);
     if (limit_N <= 0.0) return;
     out.forces.push_back({fragment, force_N * (limit_N / norm_N)});
     return;

@@ -170,4 +170,21 @@ inline Lanes max(Lanes a, Lanes b) {
 }
 #endif
 
+// The operation set of the geometry's formulas written once for any width
+// (geometry/time_to_plane.hpp's ScalarOps on one double), on two lanes.
+struct LaneOps {
+  using V = Lanes;
+  using M = Mask;
+  static V splat(double x) { return broadcast(x); }
+  static M lt(V a, V b) { return lanes::lt(a, b); }
+  static M gt(V a, V b) { return lanes::gt(a, b); }
+  static M ge(V a, V b) { return lanes::ge(a, b); }
+  static M ne(V a, V b) { return lanes::ne(a, b); }
+  static M both(M a, M b) { return a & b; }
+  static V select(M m, V a, V b) { return lanes::select(m, a, b); }
+  static V sqrt(V x) { return lanes::sqrt(x); }
+  static V copysign(V mag, V sign) { return lanes::copysign(mag, sign); }
+  static V max(V a, V b) { return lanes::max(a, b); }
+};
+
 }  // namespace fragsim::lanes

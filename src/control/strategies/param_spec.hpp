@@ -1,23 +1,18 @@
 #pragma once
 // What a strategy declares about its parameters, beside their struct: one key per parameter
 // (settings/key.hpp: name, unit, help, range or choices) and the rules that join several of them,
-// or one of them and the camera. The registry puts this in the strategy's scene section.
+// or one of them and the camera's frustum (the wall is sized to it, the near plane pulled in from
+// it). The registry puts this in the strategy's scene section.
 
 #include <functional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "geometry/frustum.hpp"
 #include "settings/key.hpp"
 
 namespace fragsim {
-
-// The camera's frustum: the wall is sized to it and the near plane is pulled in from it.
-struct StrategyCamera {
-  double fovy_deg = 60.0;
-  double aspect = 16.0 / 9.0;
-  double near_m = 0.1;
-};
 
 // One of a strategy's own accuracy settings for the time-against-error bench (fragsim bench) to
 // try alone against the scene as given: the bench knows no strategy, it runs what each declares.
@@ -30,8 +25,8 @@ struct TuningVariant {
 template <class Params>
 struct ParamSpec {
   settings::Keys<Params> keys;  // in the order --help and config.ini list them
-  // Rules across keys or with the camera. Throws InputError naming the key. Empty: none.
-  std::function<void(const Params&, const StrategyCamera&)> rules;
+  // Rules across keys or with the camera's frustum. Throws InputError naming the key. Empty: none.
+  std::function<void(const Params&, const FrustumDef&)> rules;
   std::vector<TuningVariant> tuning{};  // in the order the bench tries them
 };
 

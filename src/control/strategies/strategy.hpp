@@ -41,28 +41,40 @@ struct StepContext {
   std::span<const FragmentState> fragments;
 };
 
-struct StepOutput {
-  std::vector<AppliedForce> forces;  // at most one entry per fragment
-  std::vector<int> candidates;       // fragments the strategy considers threatening (edge)
-  std::optional<double> near_m;      // a near distance other than the scene's (near-plane)
-  std::vector<int> capped;           // fragments whose force the acceleration cap reduced
-  int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
-  int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
+// What a strategy did in a step besides its effects, for the report (RunSummary's strategy
+// activity) and the C API's stats: nothing here changes the world.
+struct StepActivity {
+  std::vector<int> candidates;  // fragments the strategy considers threatening (edge)
+  std::vector<int> capped;      // fragments whose force the acceleration cap reduced
+  int guarded = 0;              // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
+  int deferred = 0;             // fragments a per-step budget left unsolved (edge-min)
   // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
   int rejected_cheaply = 0;
-  // Each fragment's opacity in the frame after this step, 0 (invisible) to 1 (fade); empty: every
-  // fragment opaque, as for every strategy that draws fragments as they are.
-  std::vector<float> opacity;
 
   void clear() {
-    forces.clear();
     candidates.clear();
-    near_m.reset();
     capped.clear();
     guarded = 0;
     deferred = 0;
     rejected_cheaply = 0;
+  }
+};
+
+// A strategy's answer for one step: an effect for each part of the run that applies one (the
+// physics, the camera, the drawing), and its activity for the report.
+struct StepOutput {
+  std::vector<AppliedForce> forces;  // the physics: at most one entry per fragment
+  std::optional<double> near_m;      // the camera: a near distance other than the scene's
+  // The drawing: each fragment's opacity in the frame after this step, 0 (invisible) to 1 (fade);
+  // empty: every fragment opaque, as for every strategy that draws fragments as they are.
+  std::vector<float> opacity;
+  StepActivity activity;
+
+  void clear() {
+    forces.clear();
+    near_m.reset();
     opacity.clear();
+    activity.clear();
   }
 };
 

@@ -30,23 +30,23 @@ using namespace fragsim::stress;
 // Every floating-point number of a run summary.
 std::vector<double> summary_numbers(const RunSummary& s) {
   return {s.dt_s,
-          s.deviation_mean_m,
-          s.deviation_max_m,
-          s.deviated_share,
-          s.occlusion_mean,
-          s.occlusion_max,
-          s.central_occlusion_mean,
-          s.central_occlusion_max,
-          s.single_fragment_occlusion_max,
-          s.impulse_Ns,
-          s.max_accel_mps2,
-          s.min_near_m,
-          s.depth_step_m,
-          s.physics_ms_median,
-          s.physics_ms_p95,
-          s.strategy_ms_median,
-          s.strategy_ms_p95,
-          s.wall_s};
+          s.deviation.mean_m,
+          s.deviation.max_m,
+          s.deviation.deviated_share,
+          s.occlusion.mean,
+          s.occlusion.max,
+          s.occlusion.central_mean,
+          s.occlusion.central_max,
+          s.occlusion.single_fragment_max,
+          s.activity.impulse_Ns,
+          s.activity.max_accel_mps2,
+          s.activity.min_near_m,
+          s.activity.depth_step_m,
+          s.cost.physics_ms_median,
+          s.cost.physics_ms_p95,
+          s.cost.strategy_ms_median,
+          s.cost.strategy_ms_p95,
+          s.cost.wall_s};
 }
 
 const char* mode_name(const Scene& s) {
@@ -114,15 +114,15 @@ int main(int argc, char** argv) {
       const RunHealth& h = *by_name[s.strategy];
       long nonfinite_numbers = 0;
       for (double v : summary_numbers(s)) nonfinite_numbers += std::isfinite(v) ? 0 : 1;
-      const long nonfinite = s.nonfinite_fragments + h.nonfinite_states + h.nonfinite_forces +
-                             h.nonfinite_near + nonfinite_numbers;
+      const long nonfinite = s.health.nonfinite_fragments + h.nonfinite_states +
+                             h.nonfinite_forces + h.nonfinite_near + nonfinite_numbers;
       fail(s.strategy + ":nonfinite", nonfinite);
-      fail(s.strategy + ":ode", s.ode_messages);
+      fail(s.strategy + ":ode", s.health.ode_messages);
       fail(s.strategy + ":over_cap", h.forces_over_cap);
       fail(s.strategy + ":energy", h.energy_violations);
       fail(s.strategy + ":unexpected_force", h.unexpected_forces);
       t.nonfinite += nonfinite;
-      t.ode_messages += s.ode_messages;
+      t.ode_messages += s.health.ode_messages;
       t.over_cap += h.forces_over_cap;
       t.energy += h.energy_violations;
       t.unexpected += h.unexpected_forces;
@@ -142,8 +142,10 @@ int main(int argc, char** argv) {
     t.collisions += sc.sim.fragment_collisions ? 1 : 0;
     t.dt_min += sc.sim.dt_s <= 1e-3 ? 1 : 0;
     t.dt_max += sc.sim.dt_s >= 0.1 ? 1 : 0;
-    t.caps_zero += sc.edge.a_max_mps2 == 0.0 || sc.edge_min.a_max_mps2 == 0.0 ? 1 : 0;
-    t.caps_huge += sc.edge.a_max_mps2 >= 1e6 || sc.edge_min.a_max_mps2 >= 1e6 ? 1 : 0;
+    t.caps_zero +=
+        sc.strategies.edge.a_max_mps2 == 0.0 || sc.strategies.edge_min.a_max_mps2 == 0.0 ? 1 : 0;
+    t.caps_huge +=
+        sc.strategies.edge.a_max_mps2 >= 1e6 || sc.strategies.edge_min.a_max_mps2 >= 1e6 ? 1 : 0;
     t.fast_blast += sc.explosion.speed_mps >= 200.0 ? 1 : 0;
     t.fast_camera += sc.camera.max_speed_mps >= 100.0 ? 1 : 0;
     ++t.modes[mode_name(sc)];

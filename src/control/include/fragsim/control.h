@@ -143,7 +143,7 @@ typedef struct fragsim_edge_min_def {
    * by its weight, in the order top, bottom, left, right; 0 forbids an edge (not all four), each
    * in [0, 1e6]. Default 1 1 1 1. Only pushed fragments change their way out, and a push is the
    * least that clears the camera, so a fragment may still leave by a forbidden edge (fragsim's
-   * README "Keeping the action visible"). */
+   * docs/visibility.md). */
   double edge_weights[4];
   /* Since 0.4. An occlusion bound: the share of the central region (cover_region of the screen's
    * width and height) that fragments are predicted to cover over the coming second may not
@@ -176,7 +176,7 @@ typedef struct fragsim_deflect_all_def {
 
 /* Settings of one controller. Must be initialised with fragsim_default_controller_def(), then
  * changed field by field; fragsim_controller_create refuses a def that was not. Each number must
- * keep the range of fragsim's scene key of the same meaning (data/scenes/README.md: edge-min.*,
+ * keep the range of fragsim's scene key of the same meaning (docs/guide.md, scene keys: edge-min.*,
  * edge.*, deflect-all.*; e.g. a_max_mps2 in [0, 1e9], horizon_cap_s in (0, 3600]); otherwise
  * fragsim_controller_create names the field and the rule. */
 typedef struct fragsim_controller_def {
@@ -196,7 +196,7 @@ typedef struct fragsim_controller_def {
   int32_t internal_value;
 } fragsim_controller_def;
 
-/* The camera at the start of the step. */
+/* The camera at the start of the step: the C form of fragsim's pose, body and declared limits. */
 typedef struct fragsim_camera {
   fragsim_vec3 eye_m;
   /* Orthonormal (each unit length and at right angles within 1e-6): screen right, screen up and
