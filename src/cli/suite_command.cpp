@@ -163,11 +163,12 @@ int cmd_suite(const std::vector<std::string>& args) {
     throw UsageError(e.what());
   }
   if (vm.count("help")) {
-    std::cout << "usage: fragsim suite [options]\n"
-              << "Runs every strategy on a fixed battery of scenes, explosion distances, aims and "
-                 "speeds, seeds and camera modes (docs/guide.md, Suite), and prints one table per mode "
-                 "and the most robust strategy.\n"
-              << own << '\n';
+    std::cout
+        << "usage: fragsim suite [options]\n"
+        << "Runs every strategy on a fixed battery of scenes, explosion distances, aims and "
+           "speeds, seeds and camera modes (docs/guide.md, Suite), and prints one table per mode "
+           "and the most robust strategy.\n"
+        << own << '\n';
     return 0;
   }
 

@@ -26,8 +26,8 @@ ControlDump::ControlDump(const std::string& path, std::string_view strategy, con
     throw std::invalid_argument("'" + std::string(strategy) +
                                 "' is not in the controller library (edge-min, edge, deflect-all)");
   }
-  const fragsim_controller_def def =
-      control::controller_def(*id, scene.strategies.edge_min, scene.strategies.edge, scene.strategies.deflect_all);
+  const fragsim_controller_def def = control::controller_def(
+      *id, scene.strategies.edge_min, scene.strategies.edge, scene.strategies.deflect_all);
   bytes_.append("FSCDUMP2", 8);
   put(std::uint32_t{0x01020304});
   put(static_cast<std::uint32_t>(sizeof def));

@@ -38,7 +38,8 @@ TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
   const auto runs = compare(scene, {"none", "edge"}, false);
   ASSERT_EQ(runs.size(), 2u);
   EXPECT_EQ(runs[1].summary.deviation.max_m, 0.0);
-  EXPECT_EQ(runs[1].summary.intersections.near_fragments, runs[0].summary.intersections.near_fragments);
+  EXPECT_EQ(runs[1].summary.intersections.near_fragments,
+            runs[0].summary.intersections.near_fragments);
   EXPECT_EQ(runs[1].near_per_step, runs[0].near_per_step);
   EXPECT_GT(runs[1].summary.activity.candidates_initial, 0);  // it predicted, it just did not push
 }

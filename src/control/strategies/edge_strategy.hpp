@@ -1,7 +1,7 @@
 #pragma once
-// `edge`: the thesis's method (docs/method.md section 3). At t = 0 every fragment's ballistic path is
-// tested against the ball the camera can reach before the fragment lands; only the fragments that
-// pass (the candidates) are examined in later steps, each getting the force (3.4) toward the
+// `edge`: the thesis's method (docs/method.md section 3). At t = 0 every fragment's ballistic path
+// is tested against the ball the camera can reach before the fragment lands; only the fragments
+// that pass (the candidates) are examined in later steps, each getting the force (3.4) toward the
 // near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
 // candidate.
 
