@@ -211,5 +211,22 @@ TEST(Registry, RulesAcrossKeysAreTheSameFromAFileAndFromCode) {
             "near-plane.min_near_m = 0.5: must be <= camera.near_m = 0.1");
 }
 
+TEST(Registry, UnknownNameAndBadParameterAreNamed) {
+  Scene scene;
+  try {
+    make_strategy("magic", scene);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("magic"), std::string::npos);
+  }
+  scene.strategies.edge.k = -1.0;
+  try {
+    make_strategy("edge", scene);
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("edge.k = -1"), std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace fragsim

@@ -1,43 +1,27 @@
-// Each strategy on one fragment fired along a known line at a still camera (test_scenes.hpp).
+// `edge` on one fragment fired along a known line at a still camera
+// (support/single_fragment_runs.hpp), and its replanning after a bounce.
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "geometry/depth_buffer.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
 #include "strategies/near_plane_strategy.hpp"
+#include "support/single_fragment_runs.hpp"
 #include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
+using test::kAtLens;
+using test::kBeside;
+using test::run;
 using Outcome = test::RecordedRun;
-
-Outcome run(const Scene& scene, const std::string& strategy) {
-  return test::run_recorded(scene, strategy);
-}
-
-// 10 m ahead, 3 cm right of and 2 cm above the view axis, flying straight at the lens.
-const Eigen::Vector3d kAtLens{0.03, 1.62, -10.0};
-// The same line 2 m to the right.
-const Eigen::Vector3d kBeside{2.03, 1.62, -10.0};
-
-TEST(NoneStrategy, FragmentAtTheLensHitsAndFliesStraight) {
-  const Outcome o = run(test::single_fragment(kAtLens), "none");
-  EXPECT_EQ(o.summary.intersections.near_fragments, 1);
-  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 1);
-  for (const auto& step : o.rec.steps) {
-    EXPECT_TRUE(step.forces.empty());
-    // No gravity, no contact: x and y never change, the speed stays 10 m/s.
-    EXPECT_NEAR(step.fragments[0].position_m.x(), 0.03, 1e-12);
-    EXPECT_NEAR(step.fragments[0].position_m.y(), 1.62, 1e-12);
-    EXPECT_NEAR(step.fragments[0].velocity_mps.z(), 10.0, 1e-12);
-  }
-}
 
 TEST(EdgeStrategy, FragmentAtTheLensIsPushedToTheNearestEdgeAndMisses) {
   const Outcome o = run(test::single_fragment(kAtLens), "edge");
@@ -108,86 +92,6 @@ TEST(EdgeStrategy, AccelerationCapHolds) {
       EXPECT_LE(f.force_N.norm(), mass_kg * 50.0 * (1 + 1e-12));
   }
 }
-
-TEST(WallStrategy, IncomingFragmentBouncesOffTheWall) {
-  const Outcome o = run(test::single_fragment(kAtLens), "wall");
-  // It arrives at +10 m/s along z and leaves the wall moving away from the camera.
-  EXPECT_LT(o.rec.steps.back().fragments[0].velocity_mps.z(), 0.0);
-  // The wall's far face is at 0.625 m: the box never comes closer than that, give or take ODE's
-  // contact layer and one step's penetration.
-  double closest_m = 1e9;
-  for (const auto& step : o.rec.steps)
-    closest_m = std::min(closest_m, -step.fragments[0].position_m.z());
-  EXPECT_GT(closest_m, 0.5);
-  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
-  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
-}
-
-TEST(NearPlaneStrategy, NearPlaneComesInWhileAFragmentPassesAndGoesBackOut) {
-  // Passes 0.13 m right of the eye: its 0.05 m half-box reaches into the near rectangle (half
-  // width 0.1026 m at 0.1 m) but misses a 0.1 m camera body. Pulling the near plane in to 0.01 m
-  // (half width 0.0103 m) lets it pass uncut.
-  Scene scene = test::single_fragment({0.13, 1.6, -10.0});
-  scene.camera.body_size_m = {0.1, 0.1, 0.1};
-  EXPECT_EQ(run(scene, "none").summary.intersections.near_fragments, 1);
-  const Outcome o = run(scene, "near-plane");
-  double min_near = 1.0;
-  for (const auto& step : o.rec.steps) min_near = std::min(min_near, step.near_m);
-  EXPECT_LT(min_near, 0.1);
-  EXPECT_GE(min_near, scene.strategies.near_plane.min_near_m);
-  EXPECT_EQ(o.rec.steps.front().near_m, 0.1);
-  EXPECT_EQ(o.rec.steps.back().near_m, 0.1);  // it has flown past
-  EXPECT_EQ(o.summary.intersections.near_fragments, 0);
-}
-
-TEST(NearPlaneStrategy, DepthStep) {
-  // z^2 / (n 2^b): 10 m with the near plane at 0.1 m and 24 bits.
-  EXPECT_NEAR(depth_step_m(10.0, 0.1, 24), 100.0 / (0.1 * 16777216.0), 1e-15);
-}
-
-TEST(DeflectAllStrategy, PushesApproachingFragmentsAwayFromTheAxis) {
-  const Outcome right = run(test::single_fragment({0.5, 1.6, -5.0}), "deflect-all");
-  int pushes = 0;
-  for (const auto& step : right.rec.steps) {
-    for (const AppliedForce& f : step.forces) {
-      ++pushes;
-      EXPECT_GT(f.force_N.x(), 0.0);  // right of the axis: pushed further right
-      EXPECT_NEAR(f.force_N.y(), 0.0, 1e-12);
-    }
-  }
-  EXPECT_GT(pushes, 0);
-  // Out of range (6 m) at the start: no push in the first step.
-  const Outcome far = run(test::single_fragment({0.5, 1.6, -10.0}), "deflect-all");
-  EXPECT_TRUE(far.rec.steps[1].forces.empty());
-}
-
-TEST(DeflectAllStrategy, RecedingFragmentIsLeftAlone) {
-  const Outcome o = run(test::single_fragment({0.5, 1.6, -3.0}, -10.0), "deflect-all");
-  for (const auto& step : o.rec.steps) EXPECT_TRUE(step.forces.empty());
-}
-
-TEST(Registry, UnknownNameAndBadParameterAreNamed) {
-  Scene scene;
-  try {
-    make_strategy("magic", scene);
-    FAIL() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("magic"), std::string::npos);
-  }
-  scene.strategies.edge.k = -1.0;
-  try {
-    make_strategy("edge", scene);
-    FAIL() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("edge.k = -1"), std::string::npos);
-  }
-}
-
-}  // namespace
-}  // namespace fragsim
-
-namespace fragsim {
-namespace {
 
 // Thrown down and toward the camera from 3 m up, 6 m ahead: at t = 0 its path comes down through
 // the camera's height after 0.2 s, 4.8 m away, so it is no candidate (ball radius 0.2 s * 1 m/s
