@@ -34,8 +34,8 @@ Evaluation hand_run(const std::string& strategy) {
   s.exits.right = 233;
   s.exits.near = 17;
   s.exits.stayed = 0;
-  s.activity.forced_fragments =
-      65;  // of them, 29 left by the top, 11 the bottom, 12 left, 13 right
+  // 65 pushed; of them, 29 left by the top, 11 the bottom, 12 left, 13 right.
+  s.activity.forced_fragments = 65;
   s.pushed_exits.top = 29;
   s.pushed_exits.bottom = 11;
   s.pushed_exits.left = 12;
