@@ -2,17 +2,20 @@
 // the C API, the way a game calls it, at 1,728, 15,625 and 100,000 fragments (front.ini's aimed
 // blast at splits 12, 25 and 47, the last cut to 100,000), in flight (0.3 s after the explosion,
 // moved on their ballistic paths) and with 90% of them resting on the ground (zero velocity,
-// touched). Counters: s_per_fragment (shown in ns), the share the cheap rejection settles
-// (edge-min: the step's own rejected_cheaply, both boxes over each fragment's own look-ahead;
-// deflect-all: fragments out of range or receding), and the candidates and pushes of the step. The
-// first call (every id new) is made before timing: the loop measures the steady state. Run:
-// build/release/bench/fragsim_bench --benchmark_filter=Control --benchmark_repetitions=3
+// touched); the same with every id new at each call (the explosion's step), and a new controller's
+// first call with and without fragsim_controller_reserve. Counters: s_per_fragment (shown in ns),
+// the share the cheap rejection settles (edge-min: the step's own rejected_cheaply, both boxes over
+// each fragment's own look-ahead; deflect-all: fragments out of range or receding), and the
+// candidates and pushes of the step. The first call (every id new) is made before timing: the loop
+// measures the steady state. Run: build/release/bench/fragsim_bench --benchmark_filter=Control
+// --benchmark_repetitions=3
 //      --benchmark_report_aggregates_only
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "fragsim/control.h"
@@ -105,7 +108,7 @@ void BM_ControlStep(benchmark::State& state, fragsim_strategy strategy, bool res
   const Setup s = make_setup(static_cast<int>(state.range(0)), resting);
   fragsim_controller_def def = fragsim_default_controller_def();
   def.strategy = strategy;
-  fragsim_controller* ctl = nullptr;
+  fragsim_controller_id ctl{};
   if (fragsim_controller_create(&def, &ctl, nullptr, 0) != FRAGSIM_OK) {
     state.SkipWithError("create failed");
     return;
@@ -132,6 +135,61 @@ void BM_ControlStep(benchmark::State& state, fragsim_strategy strategy, bool res
   state.counters["pushed"] = stats.pushed;
   state.counters["rejected_cheaply_share"] =
       strategy == FRAGSIM_STRATEGY_EDGE_MIN ? stats.rejected_cheaply / n : 1.0 - stats.pushed / n;
+}
+
+// The explosion's step: every id new. Each iteration hands the same fragments under ids the
+// controller has not seen (two id sets taken in turn, so each call drops the last call's ids and
+// meets new ones): the id tables refill and the strategy's per-id state is re-indexed. Compare
+// with BM_ControlStep, the same inputs with the same ids.
+void BM_ControlStepAllNewIds(benchmark::State& state, bool resting) {
+  Setup s = make_setup(static_cast<int>(state.range(0)), resting);
+  const fragsim_controller_def def = fragsim_default_controller_def();
+  fragsim_controller_id ctl{};
+  if (fragsim_controller_create(&def, &ctl, nullptr, 0) != FRAGSIM_OK) {
+    state.SkipWithError("create failed");
+    return;
+  }
+  std::vector<fragsim_vec3> forces(s.fragments.size());
+  const auto n = static_cast<std::uint64_t>(s.fragments.size());
+  std::vector<fragsim_fragment> other = s.fragments;
+  for (fragsim_fragment& f : other) f.id += n;
+  fragsim_step_input a = s.input;
+  fragsim_step_input b = s.input;
+  b.fragments = other.data();
+  fragsim_controller_step(ctl, &a, forces.data(), nullptr);
+  bool flip = false;
+  fragsim_step_stats stats{};
+  for (auto _ : state) {
+    fragsim_controller_step(ctl, flip ? &a : &b, forces.data(), &stats);
+    flip = !flip;
+    benchmark::DoNotOptimize(forces.data());
+    benchmark::ClobberMemory();
+  }
+  fragsim_controller_destroy(ctl);
+  state.counters["new_ids"] = stats.new_ids;
+  state.counters["s_per_fragment"] =
+      benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                     benchmark::Counter::kInvert);
+}
+
+// A new controller's first call (its work space grows), with or without
+// fragsim_controller_reserve beforehand (the reserve itself untimed, as a game makes it at load).
+void BM_ControlFirstCall(benchmark::State& state, bool reserve) {
+  const Setup s = make_setup(static_cast<int>(state.range(0)), false);
+  const fragsim_controller_def def = fragsim_default_controller_def();
+  std::vector<fragsim_vec3> forces(s.fragments.size());
+  for (auto _ : state) {
+    state.PauseTiming();
+    fragsim_controller_id ctl{};
+    fragsim_controller_create(&def, &ctl, nullptr, 0);
+    if (reserve) fragsim_controller_reserve(ctl, static_cast<int32_t>(s.fragments.size()));
+    state.ResumeTiming();
+    fragsim_controller_step(ctl, &s.input, forces.data(), nullptr);
+    benchmark::DoNotOptimize(forces.data());
+    state.PauseTiming();
+    fragsim_controller_destroy(ctl);
+    state.ResumeTiming();
+  }
 }
 
 // edge-min's own step on the same inputs, without the C API (validation, copy into the tool's
@@ -179,6 +237,12 @@ BENCHMARK_CAPTURE(BM_ControlStep, deflect_all_in_flight, FRAGSIM_STRATEGY_DEFLEC
     ->Apply(sizes);
 BENCHMARK_CAPTURE(BM_ControlStep, deflect_all_resting, FRAGSIM_STRATEGY_DEFLECT_ALL, true)
     ->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlStepAllNewIds, edge_min_in_flight, false)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlStepAllNewIds, edge_min_resting, true)->Apply(sizes);
+BENCHMARK_CAPTURE(BM_ControlFirstCall, edge_min, false)->Arg(15625)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_ControlFirstCall, edge_min_reserved, true)
+    ->Arg(15625)
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_ControlEdgeMinDirect, in_flight, false)->Apply(sizes);
 BENCHMARK_CAPTURE(BM_ControlEdgeMinDirect, resting, true)->Apply(sizes);
 

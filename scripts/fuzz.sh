@@ -8,7 +8,8 @@
 #     (CI: the time stays SECONDS however many targets there are; each gets cores/targets of it).
 #   --runs N: instead of a time, each target runs N inputs (scripts/soak.sh: 10 million), at most
 #     P at a time (--parallel, default: the number of online CPUs).
-#   --only: these targets (scene_parser, first_root, camera_track, obj_mesh, gltf_mesh).
+#   --only: these targets (scene_parser, first_root, camera_track, obj_mesh, gltf_mesh,
+#     control_api).
 #   --keep DIR: also leave each target's log in DIR/<target>.log (the soak's record).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +17,7 @@ seconds=60
 runs=""
 parallel=""
 keep=""
-fuzzers=(scene_parser first_root camera_track obj_mesh gltf_mesh)
+fuzzers=(scene_parser first_root camera_track obj_mesh gltf_mesh control_api)
 while [ "$#" -gt 0 ]; do
   case "$1" in
     --runs) runs="$2"; shift 2 ;;

@@ -7,11 +7,12 @@
 
 int main(void) {
   fragsim_controller_def def = fragsim_default_controller_def(); /* edge-min, 3 s look-ahead */
-  fragsim_controller* ctl = NULL;
+  fragsim_controller_id ctl;
   char message[256];
   fragsim_fragment fragments[4];
   fragsim_vec3 forces[4];
-  fragsim_step_input in;
+  /* Start from the defaults (no end, dt 1/60 s, gravity -9.81 m/s^2 in y): never from "= {0}". */
+  fragsim_step_input in = fragsim_default_step_input();
   fragsim_step_stats stats;
   fragsim_status status;
   int i;
@@ -34,14 +35,7 @@ int main(void) {
     fragments[i].id = 100 + (uint64_t)i;
     fragments[i].touched = 0;
   }
-  in.time_s = 0.0;
-  in.end_time_s = INFINITY;
-  in.dt_s = 1.0 / 60.0;
-  in.gravity_mps2.x = 0.0;
-  in.gravity_mps2.y = -9.81;
-  in.gravity_mps2.z = 0.0;
   in.ground_height_m = 0.0;
-  in.camera = fragsim_default_camera();
   in.camera.eye_m.y = 1.6;
   in.fragments = fragments;
   in.fragment_count = 4;

@@ -73,15 +73,13 @@ void destroy(Scene& s) {
 }
 
 // Runs 1.5 s; returns how many boxes entered the camera's protected box (near plane, body).
-int run(fragsim_controller* ctl) {
+int run(fragsim_controller_id ctl) {
   Scene s;
   build(s);
-  fragsim_step_input in{};
-  in.end_time_s = INFINITY;
+  fragsim_step_input in = fragsim_default_step_input();  // no end, default camera (looks down -z)
   in.dt_s = kDt;
   in.gravity_mps2 = {0, -9.81, 0};
   in.ground_height_m = 0.0;
-  in.camera = fragsim_default_camera();  // looks down -z
   in.camera.eye_m = {0, 1.6, 0};
   in.camera.velocity_mps = {0, 0, -1.5};  // walking toward the blast
   std::vector<char> hit(kBoxes, 0);
@@ -103,7 +101,7 @@ int run(fragsim_controller* ctl) {
     in.fragments = s.fragments.data();
     in.fragment_count = kBoxes;
     // 2. One controller call, 3. its forces into the bodies, for this step only.
-    if (ctl != nullptr) {
+    if (!fragsim_controller_id_is_null(ctl)) {
       if (fragsim_controller_step(ctl, &in, s.forces.data(), nullptr) != FRAGSIM_OK) {
         std::fprintf(stderr, "fragsim: %s\n", fragsim_controller_last_error(ctl));
         destroy(s);
@@ -139,13 +137,13 @@ int run(fragsim_controller* ctl) {
 int main() {
   dInitODE2(0);
   fragsim_controller_def def = fragsim_default_controller_def();
-  fragsim_controller* ctl = nullptr;
+  fragsim_controller_id ctl{};
   char message[256];
   if (fragsim_controller_create(&def, &ctl, message, sizeof message) != FRAGSIM_OK) {
     std::fprintf(stderr, "fragsim: %s\n", message);
     return 1;
   }
-  const int without = run(nullptr);
+  const int without = run(fragsim_controller_id{});
   const int with = run(ctl);
   fragsim_controller_destroy(ctl);
   dCloseODE();

@@ -10,7 +10,7 @@
 namespace fragsim {
 
 CameraLimits declared_limits(const CameraDef& camera) {
-  CameraLimits limits{camera.max_speed_mps, 0.0, 0.0};
+  CameraLimits limits{camera.max_speed_mps, kUndeclaredBound, kUndeclaredBound};
   if (camera.mode == CameraMode::kPlayer) {
     limits.max_accel_mps2 = camera.player_accel_mps2;
     limits.max_turn_radps = camera.turn_rate_degps * kPi / 180.0;

@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
   uint32_t def_size, step_count;
   int use_arrays;
   fragsim_controller_def def;
-  fragsim_controller* ctl = NULL;
+  fragsim_controller_id ctl;
   char message[256];
   uint32_t s;
   long compared = 0, pushed = 0, mismatches = 0;

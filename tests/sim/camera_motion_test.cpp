@@ -214,8 +214,8 @@ TEST(CameraMotion, DeclaredLimitsComeFromThePlayerOnly) {
   EXPECT_NEAR(l.max_turn_radps, kPi / 2.0, 1e-15);
   s.camera.mode = CameraMode::kPath;
   l = declared_limits(s.camera);
-  EXPECT_EQ(l.max_accel_mps2, 0.0);  // not declared
-  EXPECT_EQ(l.max_turn_radps, 0.0);
+  EXPECT_EQ(l.max_accel_mps2, kUndeclaredBound);  // not declared
+  EXPECT_EQ(l.max_turn_radps, kUndeclaredBound);
   s.camera.mode = CameraMode::kPlayer;
   s.camera.player_accel_mps2 = kInf;  // declared: no bound
   EXPECT_EQ(declared_limits(s.camera).max_accel_mps2, kInf);

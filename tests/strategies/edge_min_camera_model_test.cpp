@@ -96,7 +96,7 @@ struct LoopResult {
 };
 template <class CameraRule>
 LoopResult run_loop(const EdgeMinParams& p, FragmentState f, CameraRule rule, int steps,
-                    double declared_accel_mps2 = 0.0) {
+                    double declared_accel_mps2 = kUndeclaredBound) {
   EdgeMinStrategy strategy(p);
   strategy.reset(1);
   Eigen::Vector3d eye = Eigen::Vector3d::Zero();
@@ -299,12 +299,17 @@ TEST(EdgeMinCameraModel, UndeclaredBoundsFallBackToTheParameters) {
   const EdgeMinStrategy s(p);
   const std::array<FragmentState, 1> frags{fragment({0, 0, -5}, {0, 0, 10.0})};
   StepContext ctx = context(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), frags);
-  for (double undeclared : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+  for (double undeclared : {kUndeclaredBound, -0.5, std::numeric_limits<double>::quiet_NaN()}) {
     ctx.camera_max_accel_mps2 = undeclared;
     ctx.camera_max_turn_radps = undeclared;
     EXPECT_EQ(s.assumed_accel_mps2(ctx), kA);
     EXPECT_NEAR(s.assumed_turn_radps(ctx), 0.5 * kPi, 1e-15);
   }
+  // 0 is a bound, not "undeclared": a camera that cannot accelerate or turn.
+  ctx.camera_max_accel_mps2 = 0.0;
+  ctx.camera_max_turn_radps = 0.0;
+  EXPECT_EQ(s.assumed_accel_mps2(ctx), 0.0);
+  EXPECT_EQ(s.assumed_turn_radps(ctx), 0.0);
   ctx.camera_max_accel_mps2 = 7.0;
   ctx.camera_max_turn_radps = 2.0;
   EXPECT_EQ(s.assumed_accel_mps2(ctx), 7.0);

@@ -214,7 +214,7 @@ TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
   def.edge_min.camera_model = FRAGSIM_CAMERA_CONSTANT;
   def.horizon_cap_s = 5.0;
   def.edge_min.max_solves = -1;
-  fragsim_controller* ctl = nullptr;
+  fragsim_controller_id ctl{};
   char message[256];
   EXPECT_EQ(fragsim_controller_create(&def, &ctl, message, sizeof message),
             FRAGSIM_ERROR_INVALID_ARGUMENT);

@@ -172,6 +172,28 @@ StepContext still_camera(std::span<const FragmentState> fragments) {
   return ctx;
 }
 
+// A horizon of a billion steps (cover_horizon_s = 10 at dt = 1e-8 s) is sampled band by band: with
+// B = 12, 23 samples at stride 1, then 12 per doubling of the stride up to 1e9 steps (about 26
+// doublings), so a few hundred samples, the last at the horizon, and no loop over every step (it
+// hung before, found by the scene keys' property test).
+TEST(CoverMax, ALongHorizonAtATinyStepIsSampledByBands) {
+  const std::vector<FragmentState> wall = wall_of_boxes(5.0, 4.0);
+  EdgeMinParams p;
+  p.cover_max = 0.5;
+  p.cover_horizon_s = 10.0;
+  OcclusionBound b;
+  b.reset(static_cast<int>(wall.size()));
+  StepOutput out;
+  StepContext ctx = still_camera(wall);
+  ctx.dt_s = 1e-8;
+  b.step(ctx, p, {1.0, 1.0, 1.0, 1.0}, out);
+  EXPECT_GT(b.sample_times_s().size(), 23u + 12u * 20u);
+  EXPECT_LT(b.sample_times_s().size(), 23u + 12u * 30u);
+  EXPECT_NEAR(b.sample_times_s().front(), 1e-8, 1e-20);
+  EXPECT_LE(b.sample_times_s().back(), 10.0 + 1e-12);
+  EXPECT_GT(b.sample_times_s().back(), 8.0);  // the last band's stride is 2^26 steps, 0.67 s
+}
+
 TEST(CoverMax, PredictedCoverageOfAWallStaysUnderTheBound) {
   // The bound alone, without edge-min's push against the camera (which would already move the
   // middle of the wall aside), so the wall's coverage is the plain prediction.

@@ -4,42 +4,47 @@
 
 namespace fragsim::control {
 
-void IdTable::clear(std::size_t n) {
+void IdTable::reserve(std::size_t n) {
   std::size_t capacity = 16;
   while (capacity < 2 * n) capacity *= 2;
-  size_ = 0;
-  if (capacity > keys_.size()) {
-    keys_.assign(capacity, 0);
-    values_.assign(capacity, -1);
-    stamps_.assign(capacity, 0);
-    mask_ = capacity - 1;
-    generation_ = 1;
-    return;
+  if (capacity <= slots_.size()) return;
+  // Built aside: if the allocation throws, nothing here has changed.
+  IdTable grown;
+  grown.slots_.resize(capacity);
+  grown.mask_ = capacity - 1;
+  for (const Slot& s : slots_) {
+    if (s.stamp == generation_) grown.insert(s.key, s.value);
   }
+  *this = std::move(grown);
+}
+
+void IdTable::clear(std::size_t n) {
+  reserve(n);
+  size_ = 0;
   if (++generation_ == 0) {  // wrapped after 2^32 clears: old stamps could look current
-    std::fill(stamps_.begin(), stamps_.end(), 0);
+    for (Slot& s : slots_) s.stamp = 0;
     generation_ = 1;
   }
 }
 
 bool IdTable::insert(std::uint64_t id, std::int32_t index) {
-  for (std::size_t slot = hash(id) & mask_;; slot = (slot + 1) & mask_) {
-    if (stamps_[slot] != generation_) {
-      stamps_[slot] = generation_;
-      keys_[slot] = id;
-      values_[slot] = index;
+  for (std::size_t i = hash(id) & mask_;; i = (i + 1) & mask_) {
+    Slot& s = slots_[i];
+    if (s.stamp != generation_) {
+      s = {id, index, generation_};
       ++size_;
       return true;
     }
-    if (keys_[slot] == id) return false;
+    if (s.key == id) return false;
   }
 }
 
 std::int32_t IdTable::find(std::uint64_t id) const {
-  if (keys_.empty()) return -1;
-  for (std::size_t slot = hash(id) & mask_;; slot = (slot + 1) & mask_) {
-    if (stamps_[slot] != generation_) return -1;
-    if (keys_[slot] == id) return values_[slot];
+  if (slots_.empty()) return -1;
+  for (std::size_t i = hash(id) & mask_;; i = (i + 1) & mask_) {
+    const Slot& s = slots_[i];
+    if (s.stamp != generation_) return -1;
+    if (s.key == id) return s.value;
   }
 }
 

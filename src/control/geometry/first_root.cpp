@@ -422,6 +422,15 @@ struct FirstNonpositiveBatch::Work {
 
 FirstNonpositiveBatch::FirstNonpositiveBatch() : work_(std::make_unique<Work>()) {}
 FirstNonpositiveBatch::~FirstNonpositiveBatch() = default;
+
+void FirstNonpositiveBatch::reserve(std::size_t n) {
+  work_->out.reserve(n);
+  work_->pending.reserve(n);
+  work_->derivatives.reserve(n);
+  // A quartic brackets its first crossing between at most three critical points.
+  work_->cubic_searches.reserve(3 * n);
+  work_->quartic_searches.reserve(n);
+}
 FirstNonpositiveBatch::FirstNonpositiveBatch(const FirstNonpositiveBatch& other)
     : work_(std::make_unique<Work>(*other.work_)) {}
 FirstNonpositiveBatch& FirstNonpositiveBatch::operator=(const FirstNonpositiveBatch& other) {

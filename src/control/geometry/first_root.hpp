@@ -60,6 +60,8 @@ class FirstNonpositiveBatch {
   // One answer per polynomial, in order; valid until the next call.
   std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
                                              std::span<const double> hi);
+  // Room for runs over up to n polynomials.
+  void reserve(std::size_t n);
 
  private:
   struct Work;

@@ -651,6 +651,14 @@ bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, doub
   return ball_piece_clears(s.piece, s.tol, kBallSplits);
 }
 
+void BallClearance::reserve(std::size_t n) {
+  const std::size_t padded = n + n % lanes::kWidth;
+  for (auto* x : {&dx_, &dy_, &dz_, &vx_, &vy_, &vz_, &r0_, &t_end_, &tol_}) x->reserve(padded);
+  clears_.reserve(padded);
+  pieces_.reserve(2 * n);
+  next_.reserve(2 * n);
+}
+
 void BallClearance::resize(std::size_t n) {
   // Room for a whole number of lane pairs; a spare path never clears (t_end < 0).
   const std::size_t padded = n + n % lanes::kWidth;
@@ -841,6 +849,13 @@ void TwoBoxClearance::use_wide_lanes(bool wide) {
 #else
   (void)wide;
 #endif
+}
+
+void TwoBoxClearance::reserve(std::size_t n) {
+  clears_.reserve(n);
+  grown_clears_.reserve(n);
+  doubt_.reserve(n + 4);
+  unsettled_.reserve(n);
 }
 
 void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes) {

@@ -37,6 +37,9 @@ class BallClearance {
  public:
   // Room for n paths, then each one set by index.
   void resize(std::size_t n);
+  // Room for runs over up to n paths, set later by resize: such a run allocates nothing while at
+  // most two pieces per path stay in doubt.
+  void reserve(std::size_t n);
   void set(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps, double r0_m,
            double t_end_s) {
     set_path(i, d_m, v_mps);
@@ -142,6 +145,8 @@ class TwoBoxClearance {
     double window_s = 0.0;
   };
   void run(std::span<const FragmentState> fragments, const Boxes& boxes);
+  // Room for runs over up to n fragments: such a run allocates nothing.
+  void reserve(std::size_t n);
   // One flag per fragment: 1 when its path clears the protected box (clears), the grown box
   // (grown_clears; all 1 without a grown box). Valid until the next run.
   std::span<const char> clears() const { return {clears_.data(), size_}; }

@@ -121,6 +121,18 @@ lanes::Lanes capped_time_to_horizon(double a, lanes::Lanes b, lanes::Lanes c, do
 
 }  // namespace
 
+void ContactPredictor::reserve(std::size_t n) {
+  const std::size_t padded = n + n % lanes::kWidth;
+  screened_.reserve(n);
+  for (auto* x : {&vy_, &py_, &radius_, &t_horizon_}) x->reserve(padded);
+  quartics_.reserve(n);
+  quartic_horizons_s_.reserve(n);
+  quartic_of_.reserve(n);
+  out_.reserve(n);
+  roots_.reserve(n);
+  clearance_.reserve(n);
+}
+
 std::span<const ContactPrediction> ContactPredictor::predict(
     const ContactQuery& query, std::span<const FragmentState> fragments, std::span<const int> which,
     std::span<const char> screen) {

@@ -89,6 +89,8 @@ class ContactPredictor {
                                              std::span<const FragmentState> fragments,
                                              std::span<const int> which,
                                              std::span<const char> screen = {});
+  // Room for predictions of up to n fragments.
+  void reserve(std::size_t n);
 
  private:
   BallClearance clearance_;

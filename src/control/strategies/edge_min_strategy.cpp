@@ -337,25 +337,48 @@ void EdgeMinStrategy::reset(int fragment_count) {
   cover_.reset(fragment_count);
 }
 
+void EdgeMinStrategy::reserve(int fragment_count) {
+  const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
+  clearance_.reserve(n);
+  if (params_.max_solves > 0) {  // the budget's state and work space
+    last_force_N_.reserve(n);
+    carried_from_.reserve(n);
+    queue_.reserve(n);
+    deferred_.reserve(n);
+  }
+}
+
 void EdgeMinStrategy::carry_over(std::span<const int> previous) {
-  std::vector<Eigen::Vector3d> next(previous.size(), Eigen::Vector3d::Zero());
+  // The last forces are read only by the budget: without one there is nothing to carry.
+  if (params_.max_solves <= 0) {
+    carried_over_ = false;
+    return;
+  }
+  carried_over_ = true;
+  // Into the spare array, which keeps the state before the call for undo_carry_over.
+  carried_from_.assign(previous.size(), Eigen::Vector3d::Zero());
   for (std::size_t i = 0; i < previous.size(); ++i) {
     const int j = previous[i];
     if (j >= 0 && static_cast<std::size_t>(j) < last_force_N_.size()) {
-      next[i] = last_force_N_[static_cast<std::size_t>(j)];
+      carried_from_[i] = last_force_N_[static_cast<std::size_t>(j)];
     }
   }
-  last_force_N_.swap(next);
+  last_force_N_.swap(carried_from_);
+}
+
+void EdgeMinStrategy::undo_carry_over() {
+  if (carried_over_) last_force_N_.swap(carried_from_);
+  carried_over_ = false;
 }
 
 double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
   const double declared = ctx.camera_max_accel_mps2;
-  return declared > 0.0 ? declared : params_.camera_accel_mps2;  // NaN: not declared either
+  return declared >= 0.0 ? declared : params_.camera_accel_mps2;  // NaN: not declared either
 }
 
 double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
   const double declared = ctx.camera_max_turn_radps;
-  return declared > 0.0 ? declared : params_.camera_turn_degps * kPi / 180.0;
+  return declared >= 0.0 ? declared : params_.camera_turn_degps * kPi / 180.0;
 }
 
 void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {

@@ -26,10 +26,10 @@
 // the constant one's) once waiting would no longer be safe.
 //
 // Which bounds: the scene's declared ones (StepContext::camera_max_accel_mps2, _turn_radps)
-// when it declares them (> 0); otherwise (0: a path or a track, which declares none) the
-// parameters' assumed camera_accel_mps2 and camera_turn_degps. A declared infinite acceleration
-// (a player with instant turns) leaves bounded_accel only the ball V_c t, which is reachable's
-// region: it still holds, since reachable does not depend on A at all.
+// when it declares them (>= 0); otherwise (kUndeclaredBound: a path or a track, which declares
+// none) the parameters' assumed camera_accel_mps2 and camera_turn_degps. A declared infinite
+// acceleration (a player with instant turns) leaves bounded_accel only the ball V_c t, which is
+// reachable's region: it still holds, since reachable does not depend on A at all.
 
 #include <array>
 #include <span>
@@ -57,7 +57,11 @@ class EdgeMinStrategy final : public Strategy {
   void step(const StepContext& ctx, StepOutput& out) override;
   // The library's fragments come and go by id: previous[i] is where fragment i was at the last
   // call (-1: new), so a deferred fragment keeps its own last force (max_solves only).
+  // Within the room reserve() made, it allocates nothing. undo_carry_over() puts back the state
+  // of before the last carry_over (for a step that failed before it changed any state).
   void carry_over(std::span<const int> previous);
+  void undo_carry_over();
+  void reserve(int fragment_count) override;
 
   // The time until the path y(t) = y0 + vy t + half_gy t^2 comes down through ground_m: the later
   // root, going down; +inf if it never does (gravity off, or ground_m = -inf: no ground), 0 if it
@@ -90,6 +94,8 @@ class EdgeMinStrategy final : public Strategy {
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
   std::vector<Eigen::Vector3d> last_force_N_;
+  std::vector<Eigen::Vector3d> carried_from_;        // last_force_N_ before the last carry_over
+  bool carried_over_ = false;                        // ... which did swap the two
   std::vector<std::tuple<int, double, int>> queue_;  // (tier, arrival, fragment)
   std::vector<char> deferred_;
 };

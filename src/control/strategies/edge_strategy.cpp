@@ -13,20 +13,37 @@ void EdgeStrategy::reset(int fragment_count) {
   predicted_.assign(static_cast<std::size_t>(fragment_count), 0);
 }
 
+void EdgeStrategy::reserve(int fragment_count) {
+  const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
+  for (auto* v : {&candidate_, &pushed_, &predicted_, &candidate_before_, &pushed_before_,
+                  &predicted_before_, &screen_}) {
+    v->reserve(n);
+  }
+  examined_.reserve(n);
+  predictor_.reserve(n);
+}
+
 void EdgeStrategy::carry_over(std::span<const int> previous) {
-  auto remap = [&previous](std::vector<char>& state, char fresh) {
-    std::vector<char> next(previous.size(), fresh);
+  // Each into its spare array, which then keeps the state before the call for undo_carry_over.
+  auto remap = [&previous](std::vector<char>& state, std::vector<char>& spare, char fresh) {
+    spare.assign(previous.size(), fresh);
     for (std::size_t i = 0; i < previous.size(); ++i) {
       const int j = previous[i];
       if (j >= 0 && static_cast<std::size_t>(j) < state.size()) {
-        next[i] = state[static_cast<std::size_t>(j)];
+        spare[i] = state[static_cast<std::size_t>(j)];
       }
     }
-    state.swap(next);
+    state.swap(spare);
   };
-  remap(candidate_, 1);
-  remap(pushed_, 0);
-  remap(predicted_, 0);
+  remap(candidate_, candidate_before_, 1);
+  remap(pushed_, pushed_before_, 0);
+  remap(predicted_, predicted_before_, 0);
+}
+
+void EdgeStrategy::undo_carry_over() {
+  candidate_.swap(candidate_before_);
+  pushed_.swap(pushed_before_);
+  predicted_.swap(predicted_before_);
 }
 
 bool EdgeStrategy::should_examine(const StepContext& ctx, std::size_t i) const {

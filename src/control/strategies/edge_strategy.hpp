@@ -27,7 +27,11 @@ class EdgeStrategy final : public Strategy {
   // the last step, or -1 for a fragment new to the run, which is examined at its first step as
   // every fragment is at t = 0. Fragments absent from `previous` are forgotten. Without this
   // call the fragment list is taken to be the same as at the last step.
+  // Within the room reserve() made, it allocates nothing; undo_carry_over() puts back the state
+  // of before the last carry_over.
   void carry_over(std::span<const int> previous);
+  void undo_carry_over();
+  void reserve(int fragment_count) override;
 
  private:
   bool should_examine(const StepContext& ctx, std::size_t i) const;
@@ -36,6 +40,8 @@ class EdgeStrategy final : public Strategy {
   std::vector<char> candidate_;  // examined again next step
   std::vector<char> pushed_;     // got a force in the last step
   std::vector<char> predicted_;  // was a candidate by the last prediction (not just by reset)
+  // The three above as they were before the last carry_over.
+  std::vector<char> candidate_before_, pushed_before_, predicted_before_;
   // Work space, kept between steps to save allocations; holds no state of the run.
   std::vector<int> examined_;
   std::vector<char> screen_;

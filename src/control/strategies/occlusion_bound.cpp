@@ -89,10 +89,14 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   std::vector<long long> steps;
   const long long dense = 2LL * params.cover_samples;
   const long long now = std::max(0, ctx.step);
-  for (long long d = 1; d <= last_step; ++d) {
-    long long stride = 1;
-    while (d >= dense * stride) stride *= 2;
-    if ((now + d) % stride == 0) steps.push_back(d);
+  // Band by band (stride 1 for d < dense, then stride s for dense s / 2 <= d < dense s), only
+  // the sampled steps: the samples grow with the log of the horizon in steps, and a horizon of a
+  // billion steps (a long cover_horizon_s at a tiny dt) must not cost a billion iterations.
+  for (long long stride = 1, lo = 1; lo <= last_step; lo = dense * stride, stride *= 2) {
+    const long long hi = std::min(last_step, dense * stride - 1);
+    for (long long d = lo + (stride - (now + lo) % stride) % stride; d <= hi; d += stride) {
+      steps.push_back(d);
+    }
   }
   const int k_samples = static_cast<int>(steps.size());
   for (long long m : steps) times_s_.push_back(static_cast<double>(m) * dt);

@@ -16,6 +16,10 @@
 
 namespace fragsim {
 
+// A camera bound not declared (StepContext::camera_max_accel_mps2, _turn_radps): any negative
+// number reads so, and this one is what the tool and the C API's FRAGSIM_UNDECLARED pass.
+inline constexpr double kUndeclaredBound = -1.0;
+
 // Everything a strategy may know at the start of a step: the present, never the camera's future.
 struct StepContext {
   int step = 0;      // index of the step about to be taken
@@ -29,12 +33,13 @@ struct StepContext {
   CameraPose camera;  // as rendered now (scene near distance)
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();  // over the step being taken
   double camera_max_speed_mps = 0.0;                              // V_c
-  // The camera's declared limits beyond V_c: 0 where the scene declares none (a scripted path or
-  // a replayed track may start, stop and turn at once, so it promises nothing), +infinity where it
-  // declares that there is no bound (a player with instant turns), else the bound. A strategy
-  // that assumes a bound the scene does not declare says so in its own parameters.
-  double camera_max_accel_mps2 = 0.0;
-  double camera_max_turn_radps = 0.0;
+  // The camera's declared limits beyond V_c: kUndeclaredBound where the scene declares none (a
+  // scripted path or a replayed track may start, stop and turn at once, so it promises nothing),
+  // +infinity where it declares that there is no bound (a player with instant turns), else the
+  // bound (0 included: a camera that cannot turn). A strategy that assumes a bound the scene does
+  // not declare says so in its own parameters.
+  double camera_max_accel_mps2 = kUndeclaredBound;
+  double camera_max_turn_radps = kUndeclaredBound;
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
   double ground_height_m = -std::numeric_limits<double>::infinity();  // -infinity: no ground
@@ -51,6 +56,10 @@ struct StepActivity {
   // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
   int rejected_cheaply = 0;
 
+  void reserve(std::size_t n) {
+    candidates.reserve(n);
+    capped.reserve(n);
+  }
   void clear() {
     candidates.clear();
     capped.clear();
@@ -70,6 +79,11 @@ struct StepOutput {
   std::vector<float> opacity;
   StepActivity activity;
 
+  // Room for one force per fragment: a step within it does not allocate.
+  void reserve(std::size_t n) {
+    forces.reserve(n);
+    activity.reserve(n);
+  }
   void clear() {
     forces.clear();
     near_m.reset();
@@ -102,6 +116,10 @@ class Strategy {
   virtual Predictor path_predictor() const { return Predictor::kDiscrete; }
   // Called before the first step of every run.
   virtual void reset(int fragment_count) = 0;
+  // Grows the work space for steps of up to fragment_count fragments, changing nothing of the run:
+  // the controller library calls it before a step changes any state, so an allocation that fails
+  // fails there and leaves the controller as it was.
+  virtual void reserve(int fragment_count) { (void)fragment_count; }
   // Called once per step, before the physics step; `out` arrives cleared.
   virtual void step(const StepContext& ctx, StepOutput& out) = 0;
 };

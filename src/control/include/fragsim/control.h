@@ -7,20 +7,52 @@
  * leave the picture through its border instead of being cut open by the near plane.
  *
  *   fragsim_controller_def def = fragsim_default_controller_def();
- *   fragsim_controller* ctl = NULL;
+ *   fragsim_controller_id ctl;
  *   if (fragsim_controller_create(&def, &ctl, NULL, 0) != FRAGSIM_OK) { ... }
- *   each step: fill a fragsim_step_input, call fragsim_controller_step, apply the forces
+ *   fragsim_step_input in = fragsim_default_step_input();   (never "= {0}": see below)
+ *   each physics step: set in's camera pose and velocity, time and fragments, call
+ *   fragsim_controller_step, apply the forces (the rules for engines: "Applying the forces")
  *   fragsim_controller_destroy(ctl);
  *
- * Threads: the library creates none and has no global state. One controller must be used by one
- * thread at a time (its calls are not synchronised); different controllers are independent and
- * may be used from different threads at once. fragsim_default_* and fragsim_version are safe from
- * any thread.
+ * DOUBLES. Every number this header passes is a double (fragsim_vec3 is three doubles). A float
+ * array handed where a double is expected is read as garbage (tiny numbers such as 1.6e-314) and
+ * nothing checks it: convert floats first.
+ *
+ * Threads: the library creates none. Its one global is the table of controller slots behind the
+ * ids (created and destroyed under a lock). One controller must be used by one thread at a time
+ * (its calls are not synchronised); different controllers are independent and may be used from
+ * different threads at once. fragsim_default_*, fragsim_version* and fragsim_status_string are
+ * safe from any thread.
  *
  * Errors: every function that can fail returns a fragsim_status; no function throws, aborts or
  * writes a non-finite number to the caller. Units are SI, in every field's name: _m metres, _mps
  * metres per second, _mps2 metres per second squared, _s seconds, _kg kilograms, _N newtons,
  * _deg degrees, _degps and _radps degrees and radians per second.
+ *
+ * Special values, each with one meaning wherever it appears:
+ *   FRAGSIM_UNDECLARED (-1)  a camera bound the game does not declare: the def's assumption applies
+ *   INFINITY                 no bound at all (camera bounds), no end (end_time_s)
+ *   -INFINITY                no ground (ground_height_m)
+ *   0                        zero, as a number: a camera whose max_speed_mps is 0 cannot move, one
+ *                            whose max_turn_radps is 0 cannot turn; a fragment of mass 0 cannot be
+ *                            pushed (it is examined, gets no force, and stats.unprotected counts it
+ *                            when it threatens the camera)
+ *
+ * Applying the forces, in an engine with a fixed physics substep (Bullet, PhysX, Jolt, ODE):
+ *   1. Call fragsim_controller_step once per physics substep, before the substep, with that
+ *      substep's dt_s and the state the last substep left (not once per rendered frame).
+ *   2. Apply each force for that one substep only: as a force the engine clears after the substep
+ *      (Bullet: applyCentralForce, then clearForces after stepSimulation's internal step, or
+ *      simply an impulse F dt_s with applyCentralImpulse), never a force that persists.
+ *   3. Wake a sleeping body you push (Bullet: activate(true)); the controller pushes only what
+ *      moves, but a pushed body must integrate.
+ *   4. Pass the camera as the physics sees it at the start of the substep: its pose interpolated
+ *      to the substep's time and its velocity over the substep (the pose the renderer shows at the
+ *      frame's end is up to one substep late). Declare the camera's bounds (max_speed_mps, and
+ *      max_accel_mps2 / max_turn_radps or FRAGSIM_UNDECLARED) as the game enforces them.
+ *   5. fragsim_fragment.touched (and the arrays' touched) is read only by the `edge` strategy with
+ *      replan = CONTACT; the default edge-min never reads it: leave it 0, or the array NULL, and
+ *      do not walk the engine's contact lists for it.
  *
  * C99; also compiles as C++. */
 #ifndef FRAGSIM_CONTROL_H
@@ -30,9 +62,9 @@
 #include <stdint.h>
 
 /* Before 1.0 a minor version may change the structs, so the shared library is named for it
- * (libfragsim_control.so.0.4): a program built against another minor is not loaded with it. */
+ * (libfragsim_control.so.0.5): a program built against another minor is not loaded with it. */
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 4
+#define FRAGSIM_CONTROL_VERSION_MINOR 5
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -65,6 +97,21 @@ typedef struct fragsim_vec3 {
   double x, y, z;
 } fragsim_vec3;
 
+/* The most fragments one call takes (INT32_MAX / 4: the controller's indices stay in 32 bits). */
+#define FRAGSIM_MAX_FRAGMENTS 536870911
+/* The most controllers alive at once in one process. */
+#define FRAGSIM_MAX_CONTROLLERS 65536
+/* A camera bound the game does not declare (fragsim_camera.max_accel_mps2, max_turn_radps). */
+#define FRAGSIM_UNDECLARED (-1.0)
+
+/* A controller, by id: a slot and the generation of its use, so an id kept after
+ * fragsim_controller_destroy (or never created: all zero) is refused with
+ * FRAGSIM_ERROR_STALE_ID, never followed to freed memory. Plain data: copy it freely. */
+typedef struct fragsim_controller_id {
+  uint32_t index1; /* slot + 1; 0: no controller */
+  uint32_t generation;
+} fragsim_controller_id;
+
 typedef enum fragsim_status {
   FRAGSIM_OK = 0,
   FRAGSIM_ERROR_NULL_ARGUMENT = 1, /* a required pointer is NULL */
@@ -72,8 +119,9 @@ typedef enum fragsim_status {
       2,                              /* the def did not come from fragsim_default_controller_def */
   FRAGSIM_ERROR_INVALID_ARGUMENT = 3, /* a number out of range or not finite, a bad enum value */
   FRAGSIM_ERROR_DUPLICATE_ID = 4,     /* two fragments of one call share an id */
-  FRAGSIM_ERROR_OUT_OF_MEMORY = 5,
-  FRAGSIM_ERROR_INTERNAL = 6 /* a computed force was not finite (a bug: please report it) */
+  FRAGSIM_ERROR_OUT_OF_MEMORY = 5,    /* the controller is as before the call */
+  FRAGSIM_ERROR_INTERNAL = 6, /* a computed force was not finite (a bug: please report it) */
+  FRAGSIM_ERROR_STALE_ID = 7  /* the controller id was destroyed, or never created (since 0.5) */
 } fragsim_status;
 
 /* Which force strategy the controller runs (fragsim's README compares them). */
@@ -205,51 +253,72 @@ typedef struct fragsim_camera {
   fragsim_vec3 up;
   fragsim_vec3 forward;
   fragsim_vec3 velocity_mps; /* the eye's velocity over the step being taken */
-  double fovy_deg;           /* vertical field of view, in (0, 180) */
-  double aspect;             /* width over height, > 0 */
-  double near_m;             /* near clip distance, > 0 */
-  double far_m;              /* far clip distance, > near_m */
-  fragsim_vec3 body_half_m;  /* half size of the camera's body, a box centred on the eye; >= 0 */
-  double max_speed_mps;      /* V_c: the fastest the player can move the camera; >= 0 */
-  /* The camera's declared bounds: 0 where the game declares none (edge-min's robust models then
-   * assume the def's camera_accel_mps2 and camera_turn_degps); INFINITY where there is none (a
-   * player who changes velocity at once: the bounded model then keeps only the ball V_c t, the
-   * reachable model's region); else the bound. >= 0, not NaN. */
+  /* Vertical field of view in DEGREES, in (0, 180); below 5 it is likely radians and sets
+   * FRAGSIM_WARNING_FOVY_IN_RADIANS. */
+  double fovy_deg;
+  double aspect;            /* width over height, > 0 */
+  double near_m;            /* near clip distance, > 0 */
+  double far_m;             /* far clip distance, > near_m */
+  fragsim_vec3 body_half_m; /* half size of the camera's body, a box centred on the eye; >= 0 */
+  /* V_c: the fastest the player can move the camera; >= 0 (0: a camera that cannot move). A
+   * camera moving faster than it declares breaks the promise the robust models keep:
+   * stats.warnings gets FRAGSIM_WARNING_CAMERA_OVER_SPEED. */
+  double max_speed_mps;
+  /* The camera's declared bounds (since 0.5; before, 0 meant undeclared): FRAGSIM_UNDECLARED
+   * where the game declares none (edge-min's robust models then assume the def's
+   * camera_accel_mps2 and camera_turn_degps); INFINITY where there is none (a player who changes
+   * velocity at once: the bounded model then keeps only the ball V_c t, the reachable model's
+   * region); else the bound, >= 0 (0: cannot accelerate, cannot turn). Radians per second for
+   * the turn: a value above 60 (3,400 degrees a second) is likely degrees and sets
+   * FRAGSIM_WARNING_TURN_IN_DEGREES. NaN and other negatives are refused. */
   double max_accel_mps2;
   double max_turn_radps;
 } fragsim_camera;
 
-/* One fragment as the engine sees it after its last step. */
+/* One fragment as the engine sees it after its last step. A fragment whose numbers break a rule
+ * below (a NaN position, a negative or infinite mass: a static body) is skipped, not refused: it
+ * gets a zero force, the others are protected as usual, and stats.skipped and
+ * stats.first_skipped say which. */
 typedef struct fragsim_fragment {
-  fragsim_vec3 position_m;   /* centre of mass */
-  fragsim_vec3 velocity_mps; /* linear velocity */
-  double radius_m;           /* bounding sphere radius, >= 0 */
-  double mass_kg;            /* >= 0; the force is mass times the chosen acceleration */
-  /* The engine's handle for this fragment, unique within a call. The controller keeps state per
-   * id between calls (edge); an id it has not seen before is a new fragment. */
+  fragsim_vec3 position_m;   /* centre of mass; finite */
+  fragsim_vec3 velocity_mps; /* linear velocity; finite */
+  double radius_m;           /* bounding sphere radius; finite, >= 0 */
+  /* Finite, >= 0; the force is mass times the chosen acceleration. 0: cannot be pushed (see the
+   * special values above). */
+  double mass_kg;
+  /* The engine's handle for this fragment, unique within a call (a repeated id refuses the call:
+   * FRAGSIM_ERROR_DUPLICATE_ID). The controller keeps state per id between calls; an id it has
+   * not seen before is a new fragment. */
   uint64_t id;
-  uint8_t touched; /* nonzero: had a contact in the last step (edge's replan = contact) */
+  uint8_t
+      touched; /* nonzero: had a contact in the last step (read by edge's replan = CONTACT only) */
 } fragsim_fragment;
 
-/* Everything one step needs. Plain data: fill it every step (or keep it and update it). */
+/* Everything one step needs. Start from fragsim_default_step_input(), never from "= {0}" (a zero
+ * end_time_s would say the shot has ended, a zero camera could not move); keep it and update what
+ * moves each step. */
 typedef struct fragsim_step_input {
   /* The caller's clock at the start of this step. Only differences of times are used. */
   double time_s;
   /* When the shot ends, if known (a cut-scene): an optional extra cap, no path is examined past
-   * it; INFINITY in a game (and in fragsim itself). */
+   * it; INFINITY (the default) in a game, and in fragsim itself. Must be after time_s: a step at
+   * or past the end is refused (FRAGSIM_ERROR_INVALID_ARGUMENT), since it could protect
+   * nothing. */
   double end_time_s;
-  double dt_s; /* the coming physics step, > 0 */
-  fragsim_vec3 gravity_mps2;
-  double ground_height_m; /* height of the ground plane (y up); -INFINITY: no ground */
+  double dt_s;               /* the coming physics step, > 0; default 1/60 */
+  fragsim_vec3 gravity_mps2; /* default (0, -9.81, 0) */
+  /* Height of the ground plane (y up); -INFINITY (the default): no ground, so every path is
+   * examined to the def's horizon_cap_s (safe, more work). */
+  double ground_height_m;
   fragsim_camera camera;
   const fragsim_fragment* fragments; /* may be NULL when fragment_count is 0 */
   int32_t fragment_count;            /* >= 0 */
 } fragsim_step_input;
 
 /* The same fragments as strided arrays the engine already has: element i of an array is at byte
- * offset i * stride from its start. position_m, velocity_mps: 3 doubles each; radius_m, mass_kg:
- * one double; id: one uint64_t; touched: one uint8_t, or NULL for "no contacts". force_N, the
- * output: 3 doubles per fragment. */
+ * offset i * stride from its start. position_m, velocity_mps: 3 DOUBLES each (not floats);
+ * radius_m, mass_kg: one double; id: one uint64_t; touched: one uint8_t, or NULL for "no
+ * contacts" (what the default edge-min needs). force_N, the output: 3 doubles per fragment. */
 typedef struct fragsim_fragment_arrays {
   const double* position_m;
   size_t position_stride_bytes;
@@ -267,22 +336,33 @@ typedef struct fragsim_fragment_arrays {
   size_t force_stride_bytes;
 } fragsim_fragment_arrays;
 
+/* Bits of fragsim_step_stats.warnings: input that is legal but looks like a mistake. In builds
+ * without NDEBUG the library also prints each kind once per controller to stderr. */
+#define FRAGSIM_WARNING_CAMERA_OVER_SPEED 1u /* |camera.velocity_mps| > camera.max_speed_mps */
+#define FRAGSIM_WARNING_FOVY_IN_RADIANS 2u   /* camera.fovy_deg < 5 */
+#define FRAGSIM_WARNING_TURN_IN_DEGREES 4u   /* camera.max_turn_radps finite and > 60 */
+
 /* What one step did. */
 typedef struct fragsim_step_stats {
-  int32_t candidates;  /* fragments whose path was found to threaten the camera */
-  int32_t pushed;      /* fragments given a nonzero force */
-  int32_t capped;      /* forces a_max cut down: these fragments may still hit */
-  int32_t guarded;     /* singular spots guarded (a fragment at the eye, a contact now) */
-  int32_t new_ids;     /* fragments whose id the controller had not seen at its last step */
+  int32_t candidates; /* fragments whose path was found to threaten the camera */
+  int32_t pushed;     /* fragments given a nonzero force (since 0.5: a zero force is not counted) */
+  int32_t capped;     /* forces a_max cut down: these fragments may still hit */
+  int32_t guarded;    /* singular spots guarded (a fragment at the eye, a contact now) */
+  int32_t new_ids;    /* fragments whose id the controller had not seen at its last step */
   int32_t dropped_ids; /* ids of the last step absent from this one (their state is forgotten) */
   int32_t deferred; /* fragments edge_min.max_solves left unsolved (they kept their last force) */
   /* Since 0.3: fragments (a count, 0 to fragment_count) that edge-min's cheap box rejection
    * settled as certainly clear before any exact solve; rejected_cheaply / fragment_count is the
    * share of the step's work that took the fast path. 0 for edge and deflect-all. */
   int32_t rejected_cheaply;
+  /* Since 0.5. Fragments skipped for numbers that break fragsim_fragment's rules (they got a zero
+   * force), and the index of the first of them in the call's order (-1: none). */
+  int32_t skipped;
+  int32_t first_skipped;
+  /* Since 0.5. Fragments that threaten the camera and got no force: mass 0 (cannot be pushed). */
+  int32_t unprotected;
+  uint32_t warnings; /* since 0.5: FRAGSIM_WARNING_* bits */
 } fragsim_step_stats;
-
-typedef struct fragsim_controller fragsim_controller;
 
 /* The library's version, FRAGSIM_CONTROL_VERSION of the build (compare with the header's). */
 FRAGSIM_API int32_t fragsim_version(void);
@@ -294,47 +374,70 @@ FRAGSIM_API const char* fragsim_status_string(fragsim_status status);
 FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void);
 
 /* A still camera at the origin looking down -z, fragsim's default frustum (fovy 60, 16:9, near
- * 0.1 m, far 500 m), body 0.3 x 0.2 x 0.3 m, V_c 3 m/s, no declared acceleration or turn bound. */
+ * 0.1 m, far 500 m), body 0.3 x 0.2 x 0.3 m, V_c 3 m/s, acceleration and turn FRAGSIM_UNDECLARED.
+ */
 FRAGSIM_API fragsim_camera fragsim_default_camera(void);
 
-/* Creates a controller. On failure *out_controller is NULL and, when message is not NULL, a
- * NUL-terminated reason naming the field and its value is written there (cut to message_size). */
+/* Since 0.5. A step input to start from: time 0, no end (INFINITY), dt 1/60 s, gravity
+ * (0, -9.81, 0), no ground (-INFINITY), fragsim_default_camera(), no fragments. */
+FRAGSIM_API fragsim_step_input fragsim_default_step_input(void);
+
+/* True for the all-zero id (no controller); says nothing of whether a nonzero id is alive. */
+static inline int fragsim_controller_id_is_null(fragsim_controller_id id) {
+  return id.index1 == 0;
+}
+
+/* Creates a controller. On failure *out_controller is the null id and, when message is not NULL,
+ * a NUL-terminated reason naming the field and its value is written there (cut to
+ * message_size). */
 FRAGSIM_API fragsim_status fragsim_controller_create(const fragsim_controller_def* def,
-                                                     fragsim_controller** out_controller,
+                                                     fragsim_controller_id* out_controller,
                                                      char* message, size_t message_size);
 
-/* Destroys a controller; NULL is allowed. */
-FRAGSIM_API void fragsim_controller_destroy(fragsim_controller* controller);
+/* Destroys a controller. FRAGSIM_ERROR_STALE_ID for an id already destroyed (destroying twice is
+ * refused, not a crash), FRAGSIM_OK for the null id (nothing to do). */
+FRAGSIM_API fragsim_status fragsim_controller_destroy(fragsim_controller_id controller);
 
-/* Forgets every fragment: the next step treats all ids as new. */
-FRAGSIM_API void fragsim_controller_reset(fragsim_controller* controller);
+/* Nonzero while the id names a live controller. */
+FRAGSIM_API int fragsim_controller_is_valid(fragsim_controller_id controller);
+
+/* Forgets every fragment: the next step treats all ids as new. Keeps the capacity reserved. */
+FRAGSIM_API fragsim_status fragsim_controller_reset(fragsim_controller_id controller);
+
+/* Since 0.5. Makes room for fragment_count fragments now (in [0, FRAGSIM_MAX_FRAGMENTS]), so the
+ * explosion's step (every id new) does not pay for growing the controller's work space. A step
+ * with at most that many fragments allocates nothing once the controller has seen a step of that
+ * many (a step with new ids may still grow the hash table of ids it keeps). */
+FRAGSIM_API fragsim_status fragsim_controller_reserve(fragsim_controller_id controller,
+                                                      int32_t fragment_count);
 
 /* One physics step: writes input->fragment_count forces into forces_N (the caller's array, one
  * per fragment, in the order of input->fragments; zero for most). stats may be NULL.
  *
  * On any status other than FRAGSIM_OK: forces_N, when not NULL, is filled with zeros for the
- * input's fragment count (when that count is valid), *stats is zeroed, the controller's state is
- * as before the call (after FRAGSIM_ERROR_OUT_OF_MEMORY, call fragsim_controller_reset) and
- * fragsim_controller_last_error says why.
+ * input's fragment count when that count is valid (an invalid count, outside
+ * [0, FRAGSIM_MAX_FRAGMENTS], leaves the buffer as it was: its size is unknown), *stats is zeroed,
+ * the controller's state is as before the call (also after FRAGSIM_ERROR_OUT_OF_MEMORY: the
+ * next call may simply be retried) and fragsim_controller_last_error says why.
  *
  * Fragments come and go by id: a new id is examined at its first step as every fragment is at
  * the explosion (edge: a candidate until its first prediction says otherwise); an id absent from
  * a call is forgotten, and if it returns it is new again. */
-FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller* controller,
+FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller_id controller,
                                                    const fragsim_step_input* input,
                                                    fragsim_vec3* forces_N,
                                                    fragsim_step_stats* stats);
 
 /* The same with the fragments as strided arrays (input->fragments is ignored, and count is
  * used instead of input->fragment_count); forces go to arrays->force_N. */
-FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller* controller,
+FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id controller,
                                                           const fragsim_step_input* input,
                                                           const fragsim_fragment_arrays* arrays,
                                                           int32_t count, fragsim_step_stats* stats);
 
 /* Why the controller's last failed call failed ("" after a successful one). Valid until the next
- * call on this controller; never NULL (also for a NULL controller). */
-FRAGSIM_API const char* fragsim_controller_last_error(const fragsim_controller* controller);
+ * call on this controller; never NULL (for a stale or null id: a static text saying so). */
+FRAGSIM_API const char* fragsim_controller_last_error(fragsim_controller_id controller);
 
 #ifdef __cplusplus
 }

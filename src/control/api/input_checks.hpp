@@ -1,0 +1,33 @@
+#pragma once
+// The checks of what a caller hands the C API, each failure naming the field, its value and the
+// rule: a def when a controller is created, a step's input at every step, and one fragment's
+// numbers (a fragment that breaks them is skipped, not refused: engines hand over what they have).
+
+#include <cstdint>
+#include <string>
+
+#include "fragsim/control.h"
+
+namespace fragsim::control {
+
+// A failed check: the status and the message that goes with it.
+struct Failure {
+  fragsim_status status = FRAGSIM_OK;
+  std::string message;
+  explicit operator bool() const { return status != FRAGSIM_OK; }
+};
+
+[[gnu::format(printf, 2, 3)]] Failure fail(fragsim_status status, const char* format, ...);
+
+Failure validate_def(const fragsim_controller_def& def);
+Failure validate_step_input(const fragsim_step_input& in);
+
+// Whether one fragment's numbers keep fragsim_fragment's rules: a finite position and velocity,
+// a finite radius and mass, both >= 0.
+bool fragment_usable(const double* position_m, const double* velocity_mps, double radius_m,
+                     double mass_kg);
+
+// The FRAGSIM_WARNING_* bits the camera earns: legal input that looks like a unit mix-up.
+std::uint32_t camera_warnings(const fragsim_camera& camera);
+
+}  // namespace fragsim::control

@@ -1,0 +1,287 @@
+// libFuzzer target: the controller library's C API (fragsim/control.h) as a careless engine drives
+// it: random defs, cameras, fragments with NaN, infinities, huge and negative numbers, ids that
+// repeat, counts out of range, struct or strided-array input with random strides, several steps
+// on one controller, and allocations that fail.
+//
+// Input: bytes read by FuzzedDataProvider (choices first, then numbers; missing bytes read as 0).
+//
+// Two controllers get the same calls: A sometimes has one allocation of a call fail (this file
+// replaces operator new; the Nth allocation of the call throws), B never does. Checks
+// (__builtin_trap() on violation):
+//  - every status is one of fragsim_status; last_error is never NULL;
+//  - every force written is finite; after a failed call with a valid count, every force is 0;
+//  - stats: counts within [0, count], first_skipped in [-1, count), pushed <= count;
+//  - after FRAGSIM_ERROR_OUT_OF_MEMORY, A retried without a failure gives B's status and B's forces
+//    bit for bit: the failure left A as it was;
+//  - a destroyed controller's id is refused (FRAGSIM_ERROR_STALE_ID), destroying it again too.
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <new>
+#include <vector>
+
+#include "fragsim/control.h"
+
+namespace {
+
+long g_allocations = 0;
+long g_fail_at = 0;  // 0: none
+
+void* allocate(std::size_t n) {
+  if (g_fail_at != 0 && ++g_allocations == g_fail_at) throw std::bad_alloc();
+  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
+  throw std::bad_alloc();
+}
+
+}  // namespace
+
+void* operator new(std::size_t n) {
+  return allocate(n);
+}
+void* operator new[](std::size_t n) {
+  return allocate(n);
+}
+void operator delete(void* p) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p) noexcept {
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
+void operator delete[](void* p, std::size_t) noexcept {
+  std::free(p);
+}
+
+namespace {
+
+void require(bool ok) {
+  if (!ok) __builtin_trap();
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A number a careless caller might pass: special values often, else a value in a wide range.
+double number(FuzzedDataProvider& in, double lo, double hi) {
+  static const double special[] = {0.0,
+                                   -0.0,
+                                   1.0,
+                                   -1.0,
+                                   kInf,
+                                   -kInf,
+                                   std::numeric_limits<double>::quiet_NaN(),
+                                   1e300,
+                                   -1e300,
+                                   1e-300,
+                                   5e-324,
+                                   1.6e-314,
+                                   FRAGSIM_UNDECLARED};
+  const int pick = in.ConsumeIntegralInRange<int>(0, 20);
+  if (pick < static_cast<int>(sizeof special / sizeof special[0])) return special[pick];
+  return in.ConsumeFloatingPointInRange<double>(lo, hi);
+}
+
+fragsim_vec3 vec(FuzzedDataProvider& in, double lo, double hi) {
+  return {number(in, lo, hi), number(in, lo, hi), number(in, lo, hi)};
+}
+
+bool valid_status(fragsim_status s) {
+  return static_cast<int>(s) >= FRAGSIM_OK && static_cast<int>(s) <= FRAGSIM_ERROR_STALE_ID;
+}
+
+struct Call {
+  fragsim_step_input input{};
+  std::vector<fragsim_fragment> fragments;
+  bool arrays = false;
+  int32_t count = 0;
+  // The arrays' layout: each field at its own stride (a multiple of its size) in one buffer.
+  std::size_t stride = 0;
+  std::vector<unsigned char> buffer;
+};
+
+Call make_call(FuzzedDataProvider& in, double time_s) {
+  Call c;
+  fragsim_step_input& s = c.input;
+  s = fragsim_default_step_input();
+  s.time_s = in.ConsumeBool() ? time_s : number(in, -10, 10);
+  if (in.ConsumeBool()) s.end_time_s = number(in, -10, 10);
+  if (in.ConsumeBool()) s.dt_s = number(in, 1e-6, 1.0);
+  if (in.ConsumeBool()) s.gravity_mps2 = vec(in, -20, 20);
+  if (in.ConsumeBool()) s.ground_height_m = number(in, -10, 10);
+  fragsim_camera& cam = s.camera;
+  if (in.ConsumeBool()) cam.eye_m = vec(in, -10, 10);
+  if (in.ConsumeBool()) cam.velocity_mps = vec(in, -60, 60);
+  if (in.ConsumeBool()) cam.forward = vec(in, -1, 1);  // mostly not unit: refused
+  if (in.ConsumeBool()) cam.fovy_deg = number(in, 0, 180);
+  if (in.ConsumeBool()) cam.near_m = number(in, 0, 2);
+  if (in.ConsumeBool()) cam.body_half_m = vec(in, 0, 1);
+  if (in.ConsumeBool()) cam.max_speed_mps = number(in, 0, 100);
+  if (in.ConsumeBool()) cam.max_accel_mps2 = number(in, 0, 1000);
+  if (in.ConsumeBool()) cam.max_turn_radps = number(in, 0, 100);
+  const int n = in.ConsumeIntegralInRange<int>(0, 48);
+  for (int i = 0; i < n; ++i) {
+    fragsim_fragment f{};
+    f.position_m = {number(in, -3, 3), number(in, -3, 3), number(in, -12, 1)};
+    f.velocity_mps = {number(in, -5, 5), number(in, -5, 5), number(in, -5, 30)};
+    f.radius_m = number(in, 0, 0.5);
+    f.mass_kg = number(in, 0, 10);
+    f.id = in.ConsumeIntegralInRange<std::uint64_t>(0, 64);  // repeats happen: refused
+    f.touched = in.ConsumeIntegral<std::uint8_t>();
+    c.fragments.push_back(f);
+  }
+  c.count = static_cast<int32_t>(n);
+  if (in.ConsumeIntegralInRange<int>(0, 15) == 0) {
+    c.count = in.ConsumeBool() ? -1 - in.ConsumeIntegralInRange<int32_t>(0, 5)
+                               : FRAGSIM_MAX_FRAGMENTS + 1;
+  }
+  s.fragments = c.fragments.empty() ? nullptr : c.fragments.data();
+  s.fragment_count = c.count;
+  c.arrays = in.ConsumeBool();
+  if (c.arrays) {
+    // One record per fragment: position (0), velocity (24), radius (48), mass (56), id (64),
+    // touched (72), force (80, 3 doubles), then 0 to 3 doubles of padding.
+    c.stride = 104 + 8 * in.ConsumeIntegralInRange<std::size_t>(0, 3);
+    c.buffer.assign(c.stride * static_cast<std::size_t>(n) + 1, 0);
+    for (int i = 0; i < n; ++i) {
+      unsigned char* r = c.buffer.data() + c.stride * static_cast<std::size_t>(i);
+      const fragsim_fragment& f = c.fragments[static_cast<std::size_t>(i)];
+      std::memcpy(r, &f.position_m, 3 * sizeof(double));
+      std::memcpy(r + 24, &f.velocity_mps, 3 * sizeof(double));
+      std::memcpy(r + 48, &f.radius_m, sizeof(double));
+      std::memcpy(r + 56, &f.mass_kg, sizeof(double));
+      std::memcpy(r + 64, &f.id, sizeof(std::uint64_t));
+      std::memcpy(r + 72, &f.touched, 1);
+    }
+  }
+  return c;
+}
+
+struct Result {
+  fragsim_status status = FRAGSIM_OK;
+  std::vector<double> forces;
+};
+
+Result run(fragsim_controller_id id, const Call& call_in, long fail_at) {
+  Call call = call_in;  // the arrays' buffer gets the forces
+  const std::size_t n = call.fragments.size();
+  Result r;
+  std::vector<fragsim_vec3> forces(n, fragsim_vec3{7.0, 7.0, 7.0});
+  fragsim_step_stats stats;
+  std::memset(&stats, 0x5a, sizeof stats);
+  if (call.arrays) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double seven[3] = {7.0, 7.0, 7.0};
+      std::memcpy(call.buffer.data() + call.stride * i + 80, seven, sizeof seven);
+    }
+    fragsim_fragment_arrays a{};
+    unsigned char* base = call.buffer.data();
+    a.position_m = reinterpret_cast<const double*>(base);
+    a.velocity_mps = reinterpret_cast<const double*>(base + 24);
+    a.radius_m = reinterpret_cast<const double*>(base + 48);
+    a.mass_kg = reinterpret_cast<const double*>(base + 56);
+    a.id = reinterpret_cast<const std::uint64_t*>(base + 64);
+    a.touched = base + 72;
+    a.force_N = reinterpret_cast<double*>(base + 80);
+    a.position_stride_bytes = a.velocity_stride_bytes = a.radius_stride_bytes = call.stride;
+    a.mass_stride_bytes = a.id_stride_bytes = a.touched_stride_bytes = call.stride;
+    a.force_stride_bytes = call.stride;
+    g_allocations = 0;
+    g_fail_at = fail_at;
+    r.status = fragsim_controller_step_arrays(id, &call.input, &a, call.count, &stats);
+    g_fail_at = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double f[3];
+      std::memcpy(f, base + call.stride * i + 80, sizeof f);
+      r.forces.insert(r.forces.end(), f, f + 3);
+    }
+  } else {
+    g_allocations = 0;
+    g_fail_at = fail_at;
+    r.status =
+        fragsim_controller_step(id, &call.input, forces.empty() ? nullptr : forces.data(), &stats);
+    g_fail_at = 0;
+    for (const fragsim_vec3& f : forces) r.forces.insert(r.forces.end(), {f.x, f.y, f.z});
+  }
+  require(valid_status(r.status));
+  require(fragsim_controller_last_error(id) != nullptr);
+  const bool count_valid = call.count >= 0 && call.count <= FRAGSIM_MAX_FRAGMENTS;
+  for (const double v : r.forces) {
+    require(std::isfinite(v) || (!count_valid && v == 7.0));
+    if (r.status != FRAGSIM_OK && count_valid) require(v == 0.0);
+  }
+  if (r.status == FRAGSIM_OK) {
+    const int32_t c = call.count;
+    for (int32_t v :
+         {stats.candidates, stats.pushed, stats.capped, stats.new_ids, stats.dropped_ids,
+          stats.deferred, stats.rejected_cheaply, stats.skipped, stats.unprotected}) {
+      require(v >= 0);
+    }
+    require(stats.pushed <= c && stats.skipped <= c && stats.rejected_cheaply <= c);
+    require(stats.first_skipped >= -1 && stats.first_skipped < c);
+    require((stats.skipped == 0) == (stats.first_skipped == -1));
+  }
+  return r;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  FuzzedDataProvider in(data, size);
+  fragsim_controller_def def = fragsim_default_controller_def();
+  const int strategy = in.ConsumeIntegralInRange<int>(0, 3);  // 3: not a strategy
+  std::memcpy(&def.strategy, &strategy, sizeof strategy);
+  if (in.ConsumeBool()) def.edge_min.margin_m = number(in, 0, 1);
+  if (in.ConsumeBool()) def.edge_min.a_max_mps2 = number(in, 0, 500);
+  if (in.ConsumeBool()) def.edge_min.max_solves = in.ConsumeIntegralInRange<int32_t>(-1, 8);
+  if (in.ConsumeBool()) def.edge_min.cover_max = number(in, 0, 1);
+  if (in.ConsumeBool()) {
+    const int model = in.ConsumeIntegralInRange<int>(0, 3);
+    std::memcpy(&def.edge_min.camera_model, &model, sizeof model);
+  }
+  if (in.ConsumeBool()) def.edge.replan = FRAGSIM_EDGE_REPLAN_ALWAYS;
+  if (in.ConsumeBool()) def.horizon_cap_s = number(in, 0, 10);
+  fragsim_controller_id a{};
+  fragsim_controller_id b{};
+  char message[128];
+  const fragsim_status created = fragsim_controller_create(&def, &a, message, sizeof message);
+  require(valid_status(created));
+  if (created != FRAGSIM_OK) {
+    require(fragsim_controller_id_is_null(a) && message[0] != '\0');
+    return 0;
+  }
+  require(fragsim_controller_create(&def, &b, nullptr, 0) == FRAGSIM_OK);
+  if (in.ConsumeBool()) {
+    const int32_t room = in.ConsumeIntegralInRange<int32_t>(-2, 64);
+    require(fragsim_controller_reserve(a, room) == fragsim_controller_reserve(b, room));
+  }
+  const int steps = in.ConsumeIntegralInRange<int>(1, 6);
+  for (int k = 0; k < steps && in.remaining_bytes() > 0; ++k) {
+    const Call call = make_call(in, k / 60.0);
+    const long fail_at = in.ConsumeBool() ? in.ConsumeIntegralInRange<long>(1, 40) : 0;
+    const Result rb = run(b, call, 0);
+    Result ra = run(a, call, fail_at);
+    if (ra.status == FRAGSIM_ERROR_OUT_OF_MEMORY && rb.status != FRAGSIM_ERROR_OUT_OF_MEMORY) {
+      ra = run(a, call, 0);  // as before the failed call: the same answer as B's
+    }
+    require(ra.status == rb.status);
+    require(ra.forces.size() == rb.forces.size());
+    require(ra.forces.empty() || std::memcmp(ra.forces.data(), rb.forces.data(),
+                                             ra.forces.size() * sizeof(double)) == 0);
+    if (in.ConsumeIntegralInRange<int>(0, 9) == 0) {
+      require(fragsim_controller_reset(a) == FRAGSIM_OK &&
+              fragsim_controller_reset(b) == FRAGSIM_OK);
+    }
+  }
+  require(fragsim_controller_destroy(a) == FRAGSIM_OK);
+  require(fragsim_controller_destroy(a) == FRAGSIM_ERROR_STALE_ID);
+  fragsim_step_input none = fragsim_default_step_input();
+  require(fragsim_controller_step(a, &none, nullptr, nullptr) == FRAGSIM_ERROR_STALE_ID);
+  require(fragsim_controller_destroy(b) == FRAGSIM_OK);
+  return 0;
+}
