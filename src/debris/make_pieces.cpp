@@ -6,6 +6,7 @@
 #include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
 #include "debris/mesh_file.hpp"
+#include "io/input_error.hpp"
 
 #include <voro++.hh>
 
@@ -84,7 +85,8 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
   const long long max_draws = 10000LL * def.pieces + 100000;
   for (long long draws = 0; static_cast<int>(out.size()) < def.pieces; ++draws) {
     if (draws > max_draws) {
-      throw std::runtime_error(
+      // Bad input (a legal offset, far out), so the one line of InputError and exit status 2.
+      throw InputError(
           "voronoi: the blast point is too far from the object for its seed points to land in "
           "it (explosion.offset_m)");
     }

@@ -72,7 +72,7 @@ std::vector<KeySpec> keys_before_strategies() {
                       [](const D&) { return std::optional<std::string>(); }};
     add_section<D>(
         t, "simulation", &Scene::sim,
-        {real("dt_s", "s", "physics step", &D::dt_s, open_closed(0, 1)),
+        {real("dt_s", "s", "physics step", &D::dt_s, closed(1e-9, 1)),
          real("duration_s", "s", "simulated time after the explosion", &D::duration_s,
               open_closed(0, 3600)),
          seed,
@@ -542,10 +542,36 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
     fail("simulation.dt_s = " + format_double(s.sim.dt_s) +
          ": must be <= simulation.duration_s = " + format_double(s.sim.duration_s));
   }
+  // The occlusion raster is grid_width_px wide and width / aspect tall: a tall thin camera would
+  // ask for billions of rows (camera.aspect = 3e-8 ran out of memory, 2.7e-6 ran for minutes).
+  const double rows = std::round(s.metrics.grid_width_px / s.camera.aspect);
+  if (rows > 4096) {
+    fail("camera.aspect = " + format_double(s.camera.aspect) + ": the occlusion raster would be " +
+         format_double(rows) + " rows tall (metrics.grid_width_px = " +
+         std::to_string(s.metrics.grid_width_px) + " / camera.aspect): at most 4096");
+  }
   const double steps = std::ceil(s.sim.duration_s / s.sim.dt_s);
   if (steps > 1e7) {
     fail("simulation.duration_s / simulation.dt_s = " + format_double(steps) +
          " steps: at most 10,000,000");
+  }
+  if (s.camera.mode == CameraMode::kPlayer) {
+    // The player's track is made ahead, one sample per step for the run and 2 s beyond it, with
+    // a change of course every player_interval_s on average: both bounded as the steps are (a
+    // step of 4.5e-9 s asked for 36 GB of samples, an interval of 6.5e-9 s ran for minutes).
+    const double span_s = s.sim.duration_s + 2.0;
+    const double samples = std::ceil(span_s / s.sim.dt_s);
+    if (samples > 1e7) {
+      fail("simulation.dt_s = " + format_double(s.sim.dt_s) + ": camera.mode = player makes " +
+           format_double(samples) + " samples (the run and 2 s beyond, one a step): at most " +
+           "10,000,000");
+    }
+    const double changes = span_s / s.camera.player_interval_s;
+    if (changes > 1e7) {
+      fail("camera.player_interval_s = " + format_double(s.camera.player_interval_s) +
+           ": the player would change course about " + format_double(std::round(changes)) +
+           " times (the run and 2 s beyond): at most 10,000,000");
+    }
   }
   // Each strategy's rules across its keys (or with the camera), where it declares them.
   for (const StrategyEntry& e : table) {

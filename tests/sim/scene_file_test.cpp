@@ -220,5 +220,26 @@ TEST(SceneFile, MeshBelowTheGroundIsRefusedByItsLowestVertex) {
   std::filesystem::remove_all(dir);
 }
 
+// Legal values the property test over the keys (tests/property/scene_keys_test.cpp) found to abort
+// or hang, now refused with one line each: a step of 5e-324 s (ODE's 1 / dt overflows), a camera
+// so tall and thin that the occlusion raster needs billions of rows (out of memory, or minutes),
+// and a player whose track asks for 36 GB of samples or 4e7 changes of course.
+TEST(SceneFile, ExtremesFoundByThePropertyTestAreRefused) {
+  EXPECT_EQ(error_of("[simulation]\ndt_s = 4.9406564584124654e-324\nduration_s = 1e-322\n"),
+            "bad.ini:2: simulation.dt_s = '4.9406564584124654e-324': must be in [1e-09, 1]");
+  EXPECT_EQ(error_of("[camera]\naspect = 3.00042649014661e-08\n"),
+            "camera.aspect = 3.00042649014661e-08: the occlusion raster would be 5332575236 rows "
+            "tall (metrics.grid_width_px = 160 / camera.aspect): at most 4096");
+  EXPECT_EQ(error_of("[camera]\naspect = 0.0390625\n"), "");  // 4096 rows
+  EXPECT_NE(error_of("[simulation]\ndt_s = 4.4571525542105243e-09\nduration_s = 1e-7\n"
+                     "[camera]\nmode = player\n")
+                .find("camera.mode = player makes"),
+            std::string::npos);
+  EXPECT_NE(error_of("[camera]\nmode = player\nplayer_interval_s = 6.5e-9\n")
+                .find("camera.player_interval_s = 6.5e-09: the player would change course about"),
+            std::string::npos);
+  EXPECT_EQ(error_of("[camera]\nmode = player\nplayer_interval_s = 1e-6\n"), "");
+}
+
 }  // namespace
 }  // namespace fragsim
