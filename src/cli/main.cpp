@@ -234,6 +234,10 @@ int main(int argc, char** argv) {
   } catch (const UsageError& e) {
     std::cerr << "fragsim " << command << ": " << e.what() << '\n';
     return kUsageError;
+  } catch (const InputError& e) {
+    // Bad input found only once the run has begun (a piece too light for ODE): still bad input.
+    std::cerr << "fragsim " << command << ": " << e.what() << '\n';
+    return kUsageError;
   } catch (const std::exception& e) {
     std::cerr << "fragsim " << command << ": " << e.what() << '\n';
     return 1;

@@ -6,6 +6,7 @@
 #include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
 #include "debris/mesh_file.hpp"
+#include "io/input_error.hpp"
 
 #include <voro++.hh>
 
@@ -84,7 +85,8 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
   const long long max_draws = 10000LL * def.pieces + 100000;
   for (long long draws = 0; static_cast<int>(out.size()) < def.pieces; ++draws) {
     if (draws > max_draws) {
-      throw std::runtime_error(
+      // Bad input (legal keys that together cannot be made), so InputError: one line, status 2.
+      throw InputError(
           "voronoi: the blast point is too far from the object for its seed points to land in "
           "it (explosion.offset_m)");
     }
@@ -132,8 +134,9 @@ std::vector<Piece> voronoi_pieces(const DebrisDef& def) {
       try {
         hull = convex_hull(points);
       } catch (const DegenerateHull& e) {
-        throw std::runtime_error("voronoi: cell " + std::to_string(id + 1) + ": " + e.what() +
-                                 " (fewer object.pieces or a smaller object.cluster)");
+        throw InputError(
+            "voronoi: cell " + std::to_string(id + 1) + ": " + e.what() +
+            " (fewer object.pieces, a smaller object.cluster or a larger object.size_m)");
       }
       Piece& p = out[static_cast<std::size_t>(id)];
       p.centre_m = hull.centre_m;
@@ -144,7 +147,11 @@ std::vector<Piece> voronoi_pieces(const DebrisDef& def) {
     } while (loop.inc());
   }
   for (std::size_t i = 0; i < done.size(); ++i) {
-    if (!done[i]) throw std::runtime_error("voronoi: voro++ made no cell " + std::to_string(i + 1));
+    // voro++ works to absolute tolerances: cells of a few micrometres can come out empty.
+    if (!done[i]) {
+      throw InputError("voronoi: voro++ made no cell " + std::to_string(i + 1) +
+                       " (cells too small for it: a larger object.size_m or fewer object.pieces)");
+    }
   }
   return out;
 }

@@ -2,6 +2,7 @@
 // What a live session needs from whoever plays it: the window (sdl_window.hpp) or a script (the
 // benchmark's, scripted_route.hpp). The session never sees a device.
 
+#include <string>
 #include <vector>
 
 #include "play/flight_controls.hpp"
@@ -33,6 +34,9 @@ class PlayFrontend {
   virtual void present(const Image& frame) = 0;
   // True: simulated time follows the clock (a person watches). False: as fast as it goes.
   virtual bool paced() const = 0;
+  // Where the flight is ("flight 1, none, 1.2 s"), each time that text changes: a window shows it
+  // in its title, where a script driving the window reads simulated time (play_window_test.sh).
+  virtual void show_status(const std::string& /*text*/) {}
 };
 
 }  // namespace fragsim

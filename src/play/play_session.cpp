@@ -205,6 +205,13 @@ class PlaySession::Flight {
     physics_ms_ = 0.0;
     strategy_ms_ = 0.0;
     last_drawn_t_s_ = snap.t_s;
+    char text[160];
+    std::snprintf(text, sizeof text, "flight %d, %s, %.1f s", s_.flights_ + 1, strategy_.c_str(),
+                  snap.t_s);
+    if (status_ != text) {
+      status_ = text;
+      s_.frontend_.show_status(status_);
+    }
   }
 
   // Waits until the clock reaches simulated time; when it is already past, simulated time gives
@@ -239,6 +246,7 @@ class PlaySession::Flight {
   HudState hud_;
   std::vector<PlayEvent> events_;
   bool screenshot_ = false;
+  std::string status_;       // as last shown by the front end
   double physics_ms_ = 0.0;  // the steps' since the last timed frame
   double strategy_ms_ = 0.0;
   double last_drawn_t_s_ = 0.0;

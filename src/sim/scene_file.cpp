@@ -4,12 +4,14 @@
 #include "io/number_format.hpp"
 #include "settings/key.hpp"
 #include "sim/camera_track_file.hpp"
+#include "sim/explosion.hpp"
 #include "sim/scene_strategies.hpp"
 
 #include <boost/program_options/errors.hpp>
 #include <boost/program_options/value_semantic.hpp>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -70,7 +72,7 @@ std::vector<KeySpec> keys_before_strategies() {
                       [](const D&) { return std::optional<std::string>(); }};
     add_section<D>(
         t, "simulation", &Scene::sim,
-        {real("dt_s", "s", "physics step", &D::dt_s, open_closed(0, 1)),
+        {real("dt_s", "s", "physics step", &D::dt_s, closed(1e-9, 1)),
          real("duration_s", "s", "simulated time after the explosion", &D::duration_s,
               open_closed(0, 3600)),
          seed,
@@ -339,6 +341,48 @@ void make_paths_absolute(Scene& scene, const std::filesystem::path& base) {
   }
 }
 
+std::string short_text(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
+// An object that starts partly below the ground is thrown out of it by ODE's penetration
+// correction (up to 7.2 m/s with no blast at all), so it is refused: its lowest point, the cube's
+// bottom face or the mesh's lowest vertex, must be at or above the ground plane.
+void check_object_above_ground(const Scene& s) {
+  if (!s.ground.enabled) return;
+  const Eigen::Vector3d centre_m = object_centre(s);
+  double lowest_m = centre_m.y() - 0.5 * s.object.size_m;
+  std::string what = "the cube's bottom (object.size_m = " + format_double(s.object.size_m) + ")";
+  if (s.object.mesh_pieces) {
+    lowest_m = INFINITY;
+    for (const Piece& p : *s.object.mesh_pieces) {
+      const double y_m = centre_m.y() + p.centre_m.y();
+      if (!p.shape) {  // a box
+        lowest_m = std::min(lowest_m, y_m - p.rotation.row(1).cwiseAbs().dot(p.half_extents_m));
+        continue;
+      }
+      for (const Eigen::Vector3d& v : p.shape->vertices_m) {
+        lowest_m = std::min(lowest_m, y_m + p.rotation.row(1).dot(v));
+      }
+    }
+    what = "object.mesh_file's lowest vertex";
+  }
+  // Rounding of the placement (a mesh vertex exactly on the ground comes out 1e-17 below) is not
+  // an object below the ground.
+  constexpr double kRoundingM = 1e-9;
+  if (lowest_m >= s.ground.height_m - kRoundingM) return;
+  const std::string placed =
+      s.object.distance_m > 0.0
+          ? " (placed by object.distance_m = " + format_double(s.object.distance_m) + ")"
+          : "";
+  throw SceneError("object.centre_m = " + format_vec3(s.object.centre_m) + placed + ": " + what +
+                   " is at y = " + short_text(lowest_m) + " m, below the ground at " +
+                   "ground.height_m = " + format_double(s.ground.height_m) +
+                   ": the object must start wholly at or above the ground");
+}
+
 Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description& options,
                  const StrategyTable& table, const std::string& text, const std::string& origin,
                  const std::vector<SceneOverride>& overrides) {
@@ -391,6 +435,7 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
       throw SceneError(std::string(e.what()) + " (object.mesh_file)");
     }
   }
+  check_object_above_ground(scene);
   return scene;
 }
 
@@ -497,10 +542,36 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
     fail("simulation.dt_s = " + format_double(s.sim.dt_s) +
          ": must be <= simulation.duration_s = " + format_double(s.sim.duration_s));
   }
+  // The occlusion raster is grid_width_px wide and width / aspect tall: a tall thin camera would
+  // ask for billions of rows (camera.aspect = 3e-8 ran out of memory, 2.7e-6 ran for minutes).
+  const double rows = std::round(s.metrics.grid_width_px / s.camera.aspect);
+  if (rows > 4096) {
+    fail("camera.aspect = " + format_double(s.camera.aspect) + ": the occlusion raster would be " +
+         format_double(rows) + " rows tall (metrics.grid_width_px = " +
+         std::to_string(s.metrics.grid_width_px) + " / camera.aspect): at most 4096");
+  }
   const double steps = std::ceil(s.sim.duration_s / s.sim.dt_s);
   if (steps > 1e7) {
     fail("simulation.duration_s / simulation.dt_s = " + format_double(steps) +
          " steps: at most 10,000,000");
+  }
+  if (s.camera.mode == CameraMode::kPlayer) {
+    // The player's track is made ahead, one sample per step for the run and 2 s beyond it, with
+    // a change of course every player_interval_s on average: both bounded as the steps are (a
+    // step of 4.5e-9 s asked for 36 GB of samples, an interval of 6.5e-9 s ran for minutes).
+    const double span_s = s.sim.duration_s + 2.0;
+    const double samples = std::ceil(span_s / s.sim.dt_s);
+    if (samples > 1e7) {
+      fail("simulation.dt_s = " + format_double(s.sim.dt_s) + ": camera.mode = player makes " +
+           format_double(samples) + " samples (the run and 2 s beyond, one a step): at most " +
+           "10,000,000");
+    }
+    const double changes = span_s / s.camera.player_interval_s;
+    if (changes > 1e7) {
+      fail("camera.player_interval_s = " + format_double(s.camera.player_interval_s) +
+           ": the player would change course about " + format_double(std::round(changes)) +
+           " times (the run and 2 s beyond): at most 10,000,000");
+    }
   }
   // Each strategy's rules across its keys (or with the camera), where it declares them.
   for (const StrategyEntry& e : table) {

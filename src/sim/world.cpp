@@ -3,6 +3,7 @@
 #include <ode/ode.h>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -15,6 +16,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "io/input_error.hpp"
+#include "io/number_format.hpp"
 #include "sim/body_snapshot.hpp"
 #include "sim/ground_sweep.hpp"
 #include "sim/world_probe.hpp"
@@ -94,6 +97,63 @@ constexpr double kConvexGroundCfm = 1e-5;
 // heavy piece through; scaled by dt / m a contact keeps at most this share of the speed it takes
 // away, whatever the mass and step.
 constexpr double kSweepCfmShare = 1e-3;
+
+// The most a fragment's contact may give way to a unit impulse in ODE's units, 1/m + r^2/I (the
+// entries of the matrix J M^-1 J^T that ODE's exact solver factors), as a bound: 1/m plus the
+// bounding radius squared over the smallest principal moment. ODE's exact solver aborts the
+// process (dxLDLTRemove: "d[i] != 0", or dxNormalize4 after it) once that reaches about 5e7 per
+// kg at any step from 1 ms to 1 s and any CFM (measured on boxes dropped on a plane: a 1 cm cube
+// of 3e-8 kg fails, of 1e-7 kg runs; a 0.1 m cube of 1 kg with its inertia cut 1e8 times fails
+// as well), and QuickStep does not; heavy bodies (1e30 kg) do not. The world therefore works in
+// a mass unit that keeps every fragment below this bound, 50 times under the failure: ODE's
+// masses are kg times ode_mass_scale (1 unless a fragment is that light, as in every shipped
+// scene), and forces and CFMs are scaled to match, so that the run is the same physics in
+// another unit: the ground, the camera and the wall are immovable, the fragments all take the
+// same factor, and every velocity is unchanged.
+constexpr double kMaxInverseMassPerKg = 1e6;
+
+// Below these a piece's mass or smallest moment is refused: ODE needs both positive and normal
+// (dMassCheck), and so does ode_mass_scale's arithmetic, with room to spare (a 1e-60 m grain of
+// anything still runs; object.size_m and object.density_kgpm3 reach below them only together).
+constexpr double kLeastMassKg = 1e-250;
+constexpr double kLeastMomentKgm2 = 1e-250;
+
+double smallest_moment_kgm2(const FragmentSpawn& s) {
+  if (s.shape) {
+    const Eigen::Matrix3d inertia_kgm2 = s.mass_kg * s.shape->inertia_per_kg_m2;
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia_kgm2, Eigen::EigenvaluesOnly)
+        .eigenvalues()
+        .minCoeff();
+  }
+  const Eigen::Vector3d e2 = (2.0 * s.half_extents_m).cwiseAbs2();
+  return s.mass_kg / 12.0 * std::min({e2.y() + e2.z(), e2.x() + e2.z(), e2.x() + e2.y()});
+}
+
+// Refuses, naming it, the first piece too light for ODE (kLeastMassKg, kLeastMomentKgm2).
+void check_masses(const std::vector<FragmentSpawn>& spawns) {
+  for (std::size_t i = 0; i < spawns.size(); ++i) {
+    const double m = spawns[i].mass_kg;
+    const double moment = smallest_moment_kgm2(spawns[i]);
+    if (m >= kLeastMassKg && moment >= kLeastMomentKgm2) continue;
+    throw InputError("object: piece " + std::to_string(i + 1) + " weighs " + format_double(m) +
+                     " kg, its smallest moment of inertia " + format_double(moment) +
+                     " kg m^2: below the 1e-250 that ODE can step (raise object.size_m or "
+                     "object.density_kgpm3)");
+  }
+}
+
+// The bound above for a fragment: 1/m + R^2 / I_min.
+double inverse_mass_bound_per_kg(const FragmentSpawn& s) {
+  const double radius_m = s.shape ? s.shape->radius_m : s.half_extents_m.norm();
+  return 1.0 / s.mass_kg + radius_m * radius_m / smallest_moment_kgm2(s);
+}
+
+// ODE's mass per kg for these fragments: 1, or what brings the loosest below the bound.
+double ode_mass_scale(const std::vector<FragmentSpawn>& spawns) {
+  double loosest = 0.0;
+  for (const FragmentSpawn& s : spawns) loosest = std::max(loosest, inverse_mass_bound_per_kg(s));
+  return loosest > kMaxInverseMassPerKg ? loosest / kMaxInverseMassPerKg : 1.0;
+}
 
 // A fragment's convex hull in ODE's format (dCreateConvex keeps pointers to these arrays, so they
 // live as long as the world): planes (n, d), points, and per face its vertex count then indices.
@@ -365,6 +425,7 @@ struct World::Impl {
   std::vector<int> inside_wall;
   std::vector<char> inside_wall_flag, inside_wall_touched;
   bool first_step = true;
+  double mass_scale = 1.0;  // ODE's mass per kg (ode_mass_scale)
   bool fragment_collisions = false;
   bool exact_solver = false;
   int convex_ground_contacts = kMaxConvexContacts;  // simulation.convex_ground_contacts
@@ -522,7 +583,8 @@ struct World::Impl {
       if (c.shape == nullptr || !dBodyIsEnabled(bodies[i])) continue;
       add_ground_sweep_contacts(
           world, contacts, ground_geom,
-          {bodies[i], geoms[i], c.shape->vertices_m, c.shape->radius_m, c.mass_kg}, dt_s, def);
+          {bodies[i], geoms[i], c.shape->vertices_m, c.shape->radius_m, mass_scale * c.mass_kg},
+          dt_s, def);
     }
   }
 
@@ -584,7 +646,7 @@ struct World::Impl {
       s.bounce_vel = 0.1;
       if (convex && tb->kind == GeomKind::kGround) {
         s.mode |= dContactSoftCFM;
-        s.soft_cfm = kConvexGroundCfm;
+        s.soft_cfm = kConvexGroundCfm / mass_scale;
       }
       dJointID j = dJointCreateContact(world, contacts, &contact[i]);
       dJointAttach(j, dGeomGetBody(contact[i].geom.g1), dGeomGetBody(contact[i].geom.g2));
@@ -598,6 +660,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   // QuickStep shuffles constraints with ODE's global generator: seed it for every world.
   dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
   Impl& w = *impl_;
+  check_masses(spawns);  // before ODE holds anything: a throw here leaks nothing
   w.fragment_collisions = scene.sim.fragment_collisions;
   w.convex_ground_contacts = std::clamp(scene.sim.convex_ground_contacts, 1, kMaxConvexContacts);
   // A wall joins every fragment touching it into one island, and the exact solver is cubic in an
@@ -607,6 +670,8 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   w.ground = scene.ground;
   w.wall = needs.camera_wall;
   w.world = dWorldCreate();
+  w.mass_scale = ode_mass_scale(spawns);
+  if (w.mass_scale != 1.0) dWorldSetCFM(w.world, dWorldGetCFM(w.world) / w.mass_scale);
   const Eigen::Vector3d& g = scene.sim.gravity_mps2;
   dWorldSetGravity(w.world, g.x(), g.y(), g.z());
   dWorldSetQuickStepNumIterations(w.world, scene.sim.solver_iterations);
@@ -652,12 +717,13 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
     const Eigen::Vector3d size = 2.0 * s.half_extents_m;
     if (s.shape) {
       // The body frame is the shape's: centre of mass at the origin.
-      const Eigen::Matrix3d inertia_kgm2 = s.mass_kg * s.shape->inertia_per_kg_m2;
-      dMassSetParameters(&mass, s.mass_kg, 0.0, 0.0, 0.0, inertia_kgm2(0, 0), inertia_kgm2(1, 1),
+      const double m = w.mass_scale * s.mass_kg;
+      const Eigen::Matrix3d inertia_kgm2 = m * s.shape->inertia_per_kg_m2;
+      dMassSetParameters(&mass, m, 0.0, 0.0, 0.0, inertia_kgm2(0, 0), inertia_kgm2(1, 1),
                          inertia_kgm2(2, 2), inertia_kgm2(0, 1), inertia_kgm2(0, 2),
                          inertia_kgm2(1, 2));
     } else {
-      dMassSetBoxTotal(&mass, s.mass_kg, size.x(), size.y(), size.z());
+      dMassSetBoxTotal(&mass, w.mass_scale * s.mass_kg, size.x(), size.y(), size.z());
     }
     dBodySetMass(body, &mass);
     if (s.shape || s.rotation != Eigen::Matrix3d::Identity()) {
@@ -783,7 +849,8 @@ void World::add_forces(std::span<const AppliedForce> forces) {
     } else if (!dBodyIsEnabled(w.bodies[i])) {
       dBodyEnable(w.bodies[i]);
     }
-    dBodyAddForce(w.bodies[i], f.force_N.x(), f.force_N.y(), f.force_N.z());
+    const Eigen::Vector3d force = w.mass_scale * f.force_N;  // in ODE's mass unit
+    dBodyAddForce(w.bodies[i], force.x(), force.y(), force.z());
   }
 }
 
@@ -908,10 +975,11 @@ ProbeMass WorldProbe::mass(const World& world, int fragment) {
   dMass m;
   dBodyGetMass(world.impl_->bodies[static_cast<std::size_t>(fragment)], &m);
   ProbeMass out;
-  out.mass_kg = m.mass;
+  const double scale = world.impl_->mass_scale;
+  out.mass_kg = m.mass / scale;
   out.centre_m = {m.c[0], m.c[1], m.c[2]};
   for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) out.inertia_kgm2(r, c) = m.I[r * 4 + c];
+    for (int c = 0; c < 3; ++c) out.inertia_kgm2(r, c) = m.I[r * 4 + c] / scale;
   }
   return out;
 }

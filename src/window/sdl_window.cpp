@@ -68,7 +68,7 @@ bool command_for(SDL_Scancode code, PlayEvent& e) {
 
 }  // namespace
 
-SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) {
+SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : title_(title) {
   // fragsim's own SIGINT/SIGTERM handling (io/atomic_file.hpp) stays in charge.
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   // No display named and no driver asked for: say so in one line, before SDL probes its drivers
@@ -146,6 +146,10 @@ void SdlWindow::poll(long, std::vector<PlayEvent>& events, HeldControls& held) {
   held.right = axis(kRight, kLeft);
   held.yaw = axis(kYawRight, kYawLeft);
   held.pitch = axis(kPitchUp, kPitchDown);
+}
+
+void SdlWindow::show_status(const std::string& text) {
+  SDL_SetWindowTitle(window_, (title_ + " - " + text).c_str());
 }
 
 void SdlWindow::present(const Image& frame) {

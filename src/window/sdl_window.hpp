@@ -31,9 +31,12 @@ class SdlWindow final : public PlayFrontend {
   void poll(long step, std::vector<PlayEvent>& events, HeldControls& held) override;
   void present(const Image& frame) override;
   bool paced() const override { return true; }
+  // The title becomes "TITLE - text".
+  void show_status(const std::string& text) override;
 
  private:
   SDL_Window* window_ = nullptr;
+  std::string title_;
   // What each movement key holds: +1 / -1 pairs, summed into HeldControls each poll.
   bool down_[8] = {};
 };

@@ -99,7 +99,7 @@ def free_port():
         return sock.getsockname()[1]
 
 
-def wait_ready(driver, proc, seconds=30):
+def wait_ready(driver, proc, seconds=120):
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
         if proc.poll() is not None:

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `fragsim play` end to end in a real window: Xvfb on a free display, a scripted 2-second route
-# sent by xdotool (keys down and up with sleeps), a screenshot of the window (xwd) that must show
+# sent by xdotool (keys held for spans of simulated time, read from the window's title), a screenshot of the window (xwd) that must show
 # the scene and the HUD, Esc, then the recorded flight replayed with `fragsim compare`: its `none`
 # run must count the near-plane fragments and camera hits the HUD reported. Then the same without
 # any display: one line, exit status 2.
@@ -66,15 +66,38 @@ window="$(timeout 120 xdotool search --sync --onlyvisible --name '^fragsim play'
 timeout 60 xdotool windowfocus --sync "$window" || fail "could not focus the play window"
 xdotool mousemove --window "$window" 320 180
 
-# The route: 1 s forward, then 0.5 s strafing right, then 0.5 s strafing right while turning.
+# The route is timed in simulated time, read from the window's title ("... - flight 1, none,
+# 1.2 s"): a loaded machine flies fewer steps per second of the clock, so a route in wall-clock
+# sleeps moved the camera less (and at 61 ms a frame, not enough); this way it only takes longer.
+sim_s() {
+  xdotool getwindowname "$window" | sed -nE 's/.*, ([0-9]+\.[0-9]) s$/\1/p'
+}
+# Waits until simulated time has gone `$1` s past what it is now (10 minutes at most).
+fly_for() {
+  local from now
+  from="$(sim_s)"
+  [ -n "$from" ] || fail "the window's title shows no flight time: $(xdotool getwindowname "$window")"
+  for _ in $(seq 1 12000); do
+    now="$(sim_s)"
+    if [ -n "$now" ] && awk -v a="$now" -v b="$from" -v d="$1" 'BEGIN { exit !(a - b >= d) }'; then
+      return 0
+    fi
+    sleep 0.05
+  done
+  fail "simulated time did not advance by $1 s in 10 minutes"
+}
+for _ in $(seq 1 1200); do [ -n "$(sim_s)" ] && break; sleep 0.1; done
+
+# The route: 1 s forward, then 0.5 s strafing right, then 0.5 s strafing right while turning (the
+# title's 0.1 s steps make each at least 0.1 s shorter in simulated time).
 xdotool keydown w
-sleep 1
+fly_for 1.0
 xdotool keyup w keydown d
-sleep 0.5
+fly_for 0.5
 xdotool keydown e
-sleep 0.5
+fly_for 0.5
 xdotool keyup e keyup d
-sleep 0.2
+fly_for 0.2
 
 xwd -id "$window" -silent >"$tmp/shot.xwd" || fail "xwd could not take a screenshot"
 python3 "$here/check_screenshot.py" "$tmp/shot.xwd" || fail "the screenshot is wrong"

@@ -5,9 +5,12 @@
 #include <cstdio>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 namespace fragsim {
 namespace {
@@ -56,6 +59,7 @@ TEST(SceneFile, RoundTripIsExact) {
   s.sim.dt_s = 1.0 / 60.0;
   s.sim.seed = 18446744073709551615ull;
   s.object.centre_m = {0.1, 1.0 / 3.0, -7.25};
+  s.object.size_m = 0.5;  // a cube of 1.2 m would reach below the ground, which is refused
   s.camera.waypoints_m = {{0, 1.6, 0}, {0.2, 1.6, -4.0 / 3.0}};
   s.strategies.edge.reach = Reach::kGrowing;
   s.strategies.edge.replan = Replan::kContact;
@@ -171,6 +175,70 @@ TEST(SceneFile, EveryKeyIsDocumented) {
     EXPECT_NE(text.find("| `" + key + "` |", section.empty() ? 0 : at), std::string::npos)
         << full << " is not documented in docs/guide.md";
   }
+}
+
+// An object starting partly below the ground was thrown out of it by ODE at up to 7.2 m/s with no
+// blast at all: refused, naming the keys and where its lowest point is.
+TEST(SceneFile, ObjectBelowTheGroundIsRefused) {
+  EXPECT_EQ(error_of("[object]\ncentre_m = 0 0.3 -8\n"),
+            "object.centre_m = 0 0.3 -8: the cube's bottom (object.size_m = 1.2) is at y = -0.3 m, "
+            "below the ground at ground.height_m = 0: the object must start wholly at or above the "
+            "ground");
+  // Resting on it is fine, and so is any height without a ground.
+  EXPECT_EQ(error_of("[object]\ncentre_m = 0 0.6 -8\n"), "");
+  EXPECT_EQ(error_of("[object]\ncentre_m = 0 0.3 -8\n[ground]\nenabled = off\n"), "");
+  // A raised ground, and an object moved there by distance_m, are measured where they end up.
+  EXPECT_NE(error_of("[ground]\nheight_m = 1.5\n").find("ground.height_m = 1.5"),
+            std::string::npos);
+  EXPECT_NE(error_of("[object]\ncentre_m = 0 -2 -8\ndistance_m = 8\n[ground]\nenabled = on\n")
+                .find("(placed by object.distance_m = 8)"),
+            std::string::npos);
+}
+
+// A mesh object: its lowest vertex, not object.size_m, is what must be above the ground. The
+// pieces of a unit cube (vertices at y = -0.5 .. 0.5 about the file's origin).
+TEST(SceneFile, MeshBelowTheGroundIsRefusedByItsLowestVertex) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fragsim_ground_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string obj = (dir / "cube.obj").string();
+  {
+    std::ofstream out(obj);
+    out << "o cube\n";
+    for (int i = 0; i < 8; ++i) {
+      out << "v " << ((i & 1) ? 0.5 : -0.5) << ' ' << ((i & 2) ? 0.5 : -0.5) << ' '
+          << ((i & 4) ? 0.5 : -0.5) << "\n";
+    }
+    out << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+  }
+  const std::string mesh = "[object]\nmesh_file = " + obj + "\nsize_m = 5\n";
+  EXPECT_EQ(error_of(mesh + "centre_m = 0 0.5 -8\n"), "");
+  EXPECT_EQ(error_of(mesh + "centre_m = 0 0.4 -8\n"),
+            "object.centre_m = 0 0.4 -8: object.mesh_file's lowest vertex is at y = -0.1 m, below "
+            "the ground at ground.height_m = 0: the object must start wholly at or above the "
+            "ground");
+  std::filesystem::remove_all(dir);
+}
+
+// Legal values the property test over the keys (tests/property/scene_keys_test.cpp) found to abort
+// or hang, now refused with one line each: a step of 5e-324 s (ODE's 1 / dt overflows), a camera
+// so tall and thin that the occlusion raster needs billions of rows (out of memory, or minutes),
+// and a player whose track asks for 36 GB of samples or 4e7 changes of course.
+TEST(SceneFile, ExtremesFoundByThePropertyTestAreRefused) {
+  EXPECT_EQ(error_of("[simulation]\ndt_s = 4.9406564584124654e-324\nduration_s = 1e-322\n"),
+            "bad.ini:2: simulation.dt_s = '4.9406564584124654e-324': must be in [1e-09, 1]");
+  EXPECT_EQ(error_of("[camera]\naspect = 3.00042649014661e-08\n"),
+            "camera.aspect = 3.00042649014661e-08: the occlusion raster would be 5332575236 rows "
+            "tall (metrics.grid_width_px = 160 / camera.aspect): at most 4096");
+  EXPECT_EQ(error_of("[camera]\naspect = 0.0390625\n"), "");  // 4096 rows
+  EXPECT_NE(error_of("[simulation]\ndt_s = 4.4571525542105243e-09\nduration_s = 1e-7\n"
+                     "[camera]\nmode = player\n")
+                .find("camera.mode = player makes"),
+            std::string::npos);
+  EXPECT_NE(error_of("[camera]\nmode = player\nplayer_interval_s = 6.5e-9\n")
+                .find("camera.player_interval_s = 6.5e-09: the player would change course about"),
+            std::string::npos);
+  EXPECT_EQ(error_of("[camera]\nmode = player\nplayer_interval_s = 1e-6\n"), "");
 }
 
 }  // namespace
