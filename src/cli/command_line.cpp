@@ -30,12 +30,14 @@ ParsedCommand parse_command(const std::string& command, const std::vector<std::s
     p.help_shown = true;
     return p;
   }
+  std::vector<std::string> warnings;
   try {
     p.scene = load_scene(p.options.count("scene") ? p.options["scene"].as<std::string>() : "",
-                         scene_overrides(parsed));
+                         scene_overrides(parsed), &warnings);
   } catch (const SceneError& e) {
     throw UsageError(e.what());
   }
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << '\n';
   return p;
 }
 

@@ -22,7 +22,9 @@ struct ParsedCommand {
 };
 
 // Parses `args` with the command's own options, --scene, --help and every scene key; loads the
-// scene. Prints the help and sets help_shown when asked. Throws UsageError.
+// scene. Prints the help and sets help_shown when asked; prints the scene's warnings (a track
+// that does not cover the run, a key without effect) on stderr, one "warning: " line each.
+// Throws UsageError.
 ParsedCommand parse_command(const std::string& command, const std::vector<std::string>& args,
                             boost::program_options::options_description own);
 

@@ -55,7 +55,7 @@ int cmd_merge(const std::vector<std::string>& args) {
       throw UsageError(out + ": is also given as a slice (OUT comes first)");
     }
     try {
-      slices.push_back({files[i], read_input_file(files[i], "slice file")});
+      slices.push_back({files[i], read_text_file(files[i], "slice file")});
     } catch (const InputError& e) {
       throw UsageError(e.what());
     }

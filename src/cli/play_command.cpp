@@ -107,6 +107,16 @@ int cmd_play(const std::vector<std::string>& args) {
     }
   }
 
+  if (!p.options.count("bench-frames")) {
+    // Found now, not when the first flight ends and its recording fails.
+    if (const auto problem = record_path_problem(options.record, options.record_folder)) {
+      throw UsageError((options.record.empty()
+                            ? std::string("cannot record flights (--record FILE.csv): ")
+                            : "--record " + options.record + ": ") +
+                       *problem);
+    }
+  }
+
   try {
     // Tab and 1-9 reach every strategy: each is validated here, so a bad one fails now.
     validate_strategy_settings(options.strategy, p.scene);

@@ -150,7 +150,7 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
   if (p.options.count("scene")) {
     plan.origin = p.options["scene"].as<std::string>();
     try {
-      plan.scene_text = read_input_file(plan.origin, "scene file");
+      plan.scene_text = read_text_file(plan.origin, "scene file");
     } catch (const InputError& e) {
       throw UsageError(e.what());
     }

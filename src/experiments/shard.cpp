@@ -6,6 +6,9 @@
 #include <map>
 #include <optional>
 
+#include "io/input_file.hpp"
+#include "io/visible_text.hpp"
+
 namespace fragsim {
 namespace {
 
@@ -70,7 +73,8 @@ SliceHeader parse_slice_line(const std::string& line, const std::string& name) {
   }
   SliceHeader h;
   h.command = value[0];
-  if (h.command != "sweep" && h.command != "suite") bad("unknown command '" + h.command + "'");
+  if (h.command != "sweep" && h.command != "suite")
+    bad("unknown command '" + visible_text(h.command) + "'");
   try {
     h.shard = parse_shard(value[1]);
   } catch (const ShardError& e) {
@@ -78,11 +82,12 @@ SliceHeader parse_slice_line(const std::string& line, const std::string& name) {
   }
   h.plan = value[2];
   if (h.plan.size() != 16 || h.plan.find_first_not_of("0123456789abcdef") != std::string::npos) {
-    bad("plan='" + h.plan + "' is not 16 hex digits");
+    bad("plan='" + visible_text(h.plan) + "' is not 16 hex digits");
   }
-  if (!parse_jobs(value[3], h.range, h.total_jobs)) bad("jobs='" + value[3] + "' is not B-E/M");
+  if (!parse_jobs(value[3], h.range, h.total_jobs))
+    bad("jobs='" + visible_text(value[3]) + "' is not B-E/M");
   const auto rows = whole_number(value[4]);
-  if (!rows) bad("rows='" + value[4] + "' is not a whole number");
+  if (!rows) bad("rows='" + visible_text(value[4]) + "' is not a whole number");
   h.rows = *rows;
   const JobRange expected = shard_range(h.total_jobs, h.shard);
   if (h.range.begin != expected.begin || h.range.end != expected.end) {
@@ -99,12 +104,13 @@ Shard parse_shard(const std::string& text) {
   const auto slash = text.find('/');
   const auto k = slash == std::string::npos ? std::nullopt : whole_number(text.substr(0, slash));
   const auto n = slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
-  if (!k || !n) throw ShardError("'" + text + "': expected K/N, whole numbers, e.g. 0/4");
+  if (!k || !n)
+    throw ShardError("'" + visible_text(text) + "': expected K/N, whole numbers, e.g. 0/4");
   if (*n < 1 || *n > kMaxShards) {
-    throw ShardError("'" + text + "': N must be 1.." + std::to_string(kMaxShards));
+    throw ShardError("'" + visible_text(text) + "': N must be 1.." + std::to_string(kMaxShards));
   }
   if (*k >= *n) {
-    throw ShardError("'" + text + "': K counts from 0 and must be below N (0/" +
+    throw ShardError("'" + visible_text(text) + "': K counts from 0 and must be below N (0/" +
                      std::to_string(*n) + " .. " + std::to_string(*n - 1) + "/" +
                      std::to_string(*n) + ")");
   }
@@ -156,7 +162,11 @@ std::string merge_slices(const std::vector<SliceFile>& files, std::string* comma
     std::string rows;     // everything after it
   };
   std::vector<Slice> slices;
-  for (const SliceFile& f : files) {
+  // A slice saved on Windows (or through an editor that writes "\r\n") is the same slice.
+  std::vector<SliceFile> unix_files;
+  for (const SliceFile& f : files)
+    unix_files.push_back({f.name, without_carriage_returns(f.bytes)});
+  for (const SliceFile& f : unix_files) {
     const auto eol = f.bytes.find('\n');
     if (eol == std::string::npos) {
       parse_slice_line(f.bytes, f.name);  // names what is wrong with the only line

@@ -168,7 +168,7 @@ std::map<std::string, std::string> load_suite_scenes(const std::string& dir,
     if (out.count(r.scene)) continue;
     const std::string path = dir + "/" + r.scene + ".ini";
     try {
-      out.emplace(r.scene, read_input_file(path, "battery scene file"));
+      out.emplace(r.scene, read_text_file(path, "battery scene file"));
     } catch (const InputError& e) {
       throw SuiteError(e.what());
     }

@@ -28,4 +28,18 @@ std::string read_input_file(const std::string& path, const std::string& what) {
   return s;
 }
 
+std::string without_carriage_returns(std::string text) {
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r' && i + 1 < text.size() && text[i + 1] == '\n') continue;
+    text[out++] = text[i];
+  }
+  text.resize(out);
+  return text;
+}
+
+std::string read_text_file(const std::string& path, const std::string& what) {
+  return without_carriage_returns(read_input_file(path, what));
+}
+
 }  // namespace fragsim

@@ -13,4 +13,12 @@ namespace fragsim {
 // kind of file in messages ("scene file", "camera track"). Throws InputError.
 std::string read_input_file(const std::string& path, const std::string& what);
 
+// The same for the tool's own text files (scene files, camera tracks, slices, summaries), with
+// Windows line ends ("\r\n", as an editor or a checkout on Windows saves them) made "\n", so no
+// value or cell ends in a stray '\r'. Binary files (a .glb, a PNG) use read_input_file.
+std::string read_text_file(const std::string& path, const std::string& what);
+
+// `text` with every "\r\n" made "\n".
+std::string without_carriage_returns(std::string text);
+
 }  // namespace fragsim

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "io/atomic_file.hpp"
 #include "report/csv_export.hpp"
@@ -64,6 +65,21 @@ RecordPaths record_paths(const std::string& requested, int flight, const std::st
     std::error_code ec;
     if (!fs::exists(p, ec) && !fs::exists(ini_beside(p), ec)) return {p.string(), ini_beside(p)};
   }
+}
+
+std::optional<std::string> record_path_problem(const std::string& requested,
+                                               const std::string& folder) {
+  const RecordPaths paths = record_paths(requested, 1, folder);
+  for (const std::string& path : {paths.track_csv, paths.scene_ini}) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) return path + " is a folder";
+    try {
+      AtomicFile probe(path);  // destroyed uncommitted: its temporary file is removed
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+  }
+  return std::nullopt;
 }
 
 void write_flight(const RecordPaths& paths, const Scene& flight, const std::string& strategy,

@@ -4,6 +4,7 @@
 // seed, as many steps as were flown), so `fragsim compare --scene FILE.ini` runs every strategy
 // on exactly that flight. Both files are written whole or not at all.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,13 @@ struct RecordPaths {
 // play-NNN.csv in `folder` with the smallest NNN for which neither file exists: never over an
 // earlier recording.
 RecordPaths record_paths(const std::string& requested, int flight, const std::string& folder);
+
+// Whether the first flight's files (record_paths(requested, 1, folder)) can be written, found
+// before anyone flies: neither may be a folder, and each one's temporary file (the AtomicFile
+// write_flight uses) is created and removed again. Nothing when they can; else why, naming the
+// path. Later flights go to the same folder.
+std::optional<std::string> record_path_problem(const std::string& requested,
+                                               const std::string& folder);
 
 // Writes both files (each through an AtomicFile); throws std::runtime_error naming a path.
 void write_flight(const RecordPaths& paths, const Scene& flight, const std::string& strategy,

@@ -161,7 +161,7 @@ void write_comparison_csv(const std::string& dir, const Scene& scene,
 }
 
 std::vector<RunSummary> read_summary_csv(const std::string& path) {
-  std::istringstream in(read_input_file(path, "summary file"));
+  std::istringstream in(read_text_file(path, "summary file"));
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + ":1: empty file");
   const std::vector<std::string> header = split(line);

@@ -6,6 +6,7 @@
 #include "io/number_format.hpp"
 #include "report/html_escape.hpp"
 #include "report/text_table.hpp"
+#include "sim/camera_track_file.hpp"
 #include "sim/explosion.hpp"
 #include "sim/world.hpp"
 
@@ -300,6 +301,7 @@ ResultsTable results_table(const Scene& scene, const std::vector<Evaluation>& ru
               ", " + std::to_string(scene.step_count()) + " steps of " +
               fixed_text(scene.sim.dt_s, 5) + " s, seed " + std::to_string(scene.sim.seed) +
               ", ODE " + World::ode_version();
+  if (auto coverage = track_coverage_warning(scene)) t.warnings.push_back(*coverage);
   t.columns = results_columns(scene.metrics.near_miss_m);
   for (const Evaluation& e : runs) {
     std::vector<std::string> row;
@@ -346,9 +348,9 @@ std::string results_text(const ResultsTable& table) {
       if (table.columns[k].terminal) rows.back().push_back(row[k]);
     }
   }
-  std::string out = "scene " + table.scene_name + ": " + table.caption + "\n\n" +
-                    aligned_text_table(headers, rows) + "\n" + legend_text(table, true, true) +
-                    "\n";
+  std::string out = "scene " + table.scene_name + ": " + table.caption + "\n";
+  for (const std::string& w : table.warnings) out += "warning: " + w + "\n";
+  out += "\n" + aligned_text_table(headers, rows) + "\n" + legend_text(table, true, true) + "\n";
   for (const ResultsNote& n : table.notes) out += n.text + "\n";
   if (!table.verdict.empty()) out += table.verdict + "\n";
   return out;

@@ -51,6 +51,8 @@ struct ResultsNote {
 struct ResultsTable {
   std::string scene_name;
   std::string caption;  // "1728 fragments, 180 steps of 0.01667 s, seed 1, ODE 0.16.2"
+  // About the scene, under the caption: a camera track that does not cover the run.
+  std::vector<std::string> warnings;
   std::vector<ResultsColumn> columns;
   std::vector<std::vector<std::string>> rows;  // a row per run, a cell per column
   std::optional<std::size_t> best_row;         // met the thesis's goals with the least deviation
@@ -67,8 +69,8 @@ std::vector<ResultsColumn> results_columns(double near_miss_m);
 // strategy is called.
 ResultsTable results_table(const Scene& scene, const std::vector<Evaluation>& runs);
 
-// The terminal's report: "scene NAME: caption", the aligned table, the legend, the notes and
-// the verdict.
+// The terminal's report: "scene NAME: caption", a "warning: " line per warning, the aligned
+// table, the legend, the notes and the verdict.
 std::string results_text(const ResultsTable& table);
 
 // The legend as one text, entries in column order; lines end in '\n' (else joined by spaces)

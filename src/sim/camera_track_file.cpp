@@ -1,5 +1,6 @@
 #include "sim/camera_track_file.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
+#include "io/visible_text.hpp"
 
 namespace fragsim {
 namespace {
@@ -35,6 +37,20 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
+// A header name written as a quoted CSV field ("t_s"), as spreadsheets and some exporters save.
+std::string unquoted(const std::string& name) {
+  if (name.size() >= 2 && name.front() == '"' && name.back() == '"') {
+    return name.substr(1, name.size() - 2);
+  }
+  return name;
+}
+
+std::string expected_header() {
+  std::string out;
+  for (const char* c : kColumns) out += (out.empty() ? "" : ",") + std::string(c);
+  return out;
+}
+
 std::optional<double> number(const std::string& s) {
   double v = 0.0;
   const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
@@ -46,8 +62,14 @@ std::optional<double> number(const std::string& s) {
 
 }  // namespace
 
+CameraTrackReading track_reading(const CameraDef& camera) {
+  return {camera.track_strategy, camera.max_speed_mps, camera.track_time, camera.track_frame()};
+}
+
 std::vector<CameraSample> parse_camera_track(const std::string& text, const std::string& origin,
-                                             const std::string& strategy, double max_speed_mps) {
+                                             const CameraTrackReading& reading) {
+  const std::string& strategy = reading.strategy;
+  const double max_speed_mps = reading.max_speed_mps;
   std::istringstream in(text);
   std::string line;
   int number_of_line = 0;
@@ -57,9 +79,14 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
 
   // The header: the first non-empty line.
   std::vector<std::string> header;
+  std::string header_line;
   while (header.empty() && std::getline(in, line)) {
     ++number_of_line;
-    if (!trim(line).empty()) header = split(line);
+    if (!trim(line).empty()) {
+      header_line = trim(line);
+      header = split(line);
+      for (std::string& name : header) name = unquoted(name);
+    }
   }
   if (header.empty()) throw InputError(origin + ": empty camera track (expected a header row)");
   std::array<std::size_t, kColumns.size()> column{};
@@ -68,7 +95,11 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
     for (std::size_t h = 0; h < header.size(); ++h) {
       if (header[h] == kColumns[c]) found = h;
     }
-    if (found == header.size()) fail(std::string("missing column '") + kColumns[c] + "'");
+    if (found == header.size()) {
+      // A header split on ';' or quoted another way reads as one odd name: show what was read.
+      fail(std::string("missing column '") + kColumns[c] + "'; the header read was: " +
+           visible_text(header_line) + "; expected comma-separated names: " + expected_header());
+    }
     column[c] = found;
   }
   std::optional<std::size_t> strategy_column;
@@ -80,6 +111,7 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
   }
 
   std::vector<CameraSample> samples;
+  std::optional<double> first_t_s;
   std::string wanted = strategy;
   while (std::getline(in, line)) {
     ++number_of_line;
@@ -98,15 +130,23 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
     for (std::size_t c = 0; c < kColumns.size(); ++c) {
       const std::optional<double> x = number(cells[column[c]]);
       if (!x) {
-        fail(std::string(kColumns[c]) + " = '" + cells[column[c]] + "': not a finite number");
+        fail(std::string(kColumns[c]) + " = '" + visible_text(cells[column[c]]) +
+             "': not a finite number");
       }
       v[c] = *x;
     }
     CameraSample s;
-    s.t_s = v[0];
+    if (!first_t_s) first_t_s = v[0];
+    s.t_s = reading.time == TrackTime::kFromFirstSample ? v[0] - *first_t_s : v[0];
     s.eye_m = {v[1], v[2], v[3]};
     s.forward = {v[4], v[5], v[6]};
     s.up = {v[7], v[8], v[9]};
+    // Fragsim's own files (the default) are taken bit for bit.
+    if (!reading.frame.is_identity()) {
+      s.eye_m = position_to_fragsim(reading.frame, s.eye_m);
+      s.forward = direction_to_fragsim(reading.frame, s.forward);
+      s.up = direction_to_fragsim(reading.frame, s.up);
+    }
     if (std::abs(s.forward.norm() - 1.0) > kBasisTolerance ||
         std::abs(s.up.norm() - 1.0) > kBasisTolerance ||
         std::abs(s.forward.dot(s.up)) > kBasisTolerance) {
@@ -131,15 +171,80 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
     samples.push_back(s);
   }
   if (samples.empty()) {
-    throw InputError(origin + ": no samples" +
-                     (strategy_column ? " for strategy '" + wanted + "'" : std::string()));
+    throw InputError(
+        origin + ": no samples" +
+        (strategy_column ? " for strategy '" + visible_text(wanted) + "'" : std::string()));
   }
   return samples;
 }
 
+std::vector<CameraSample> parse_camera_track(const std::string& text, const std::string& origin,
+                                             const std::string& strategy, double max_speed_mps) {
+  CameraTrackReading reading;
+  reading.strategy = strategy;
+  reading.max_speed_mps = max_speed_mps;
+  return parse_camera_track(text, origin, reading);
+}
+
+std::vector<CameraSample> load_camera_track(const std::string& path,
+                                            const CameraTrackReading& reading) {
+  return parse_camera_track(read_text_file(path, "camera track"), path, reading);
+}
+
 std::vector<CameraSample> load_camera_track(const std::string& path, const std::string& strategy,
                                             double max_speed_mps) {
-  return parse_camera_track(read_input_file(path, "camera track"), path, strategy, max_speed_mps);
+  CameraTrackReading reading;
+  reading.strategy = strategy;
+  reading.max_speed_mps = max_speed_mps;
+  return load_camera_track(path, reading);
+}
+
+std::optional<std::string> track_coverage_warning(const std::vector<CameraSample>& samples,
+                                                  double run_end_s, TrackTime time,
+                                                  const std::string& name) {
+  if (samples.empty()) return std::nullopt;
+  const double first = samples.front().t_s;
+  const double last = samples.back().t_s;
+  // camera.csv's times are the run's own k dt_s; the slack only forgives the last bit of an
+  // engine's rounding.
+  const double slack_s = 1e-9 * std::max(1.0, run_end_s);
+  const bool starts = first <= slack_s;
+  const bool reaches = last >= run_end_s - slack_s;
+  if (starts && reaches) return std::nullopt;
+
+  const std::string track = name.empty() ? "the camera track" : "camera track " + name;
+  std::string covers = samples.size() == 1 ? "has one sample (t = " + format_double(first) + " s)"
+                                           : "covers t = " + format_double(first) + " to " +
+                                                 format_double(last) + " s";
+  std::string still;
+  if (samples.size() == 1 || last <= 0.0 || first >= run_end_s) {
+    still = "for the whole run";
+  } else if (!starts && !reaches) {
+    still =
+        "until t = " + format_double(first) + " s and from t = " + format_double(last) + " s on";
+  } else if (!starts) {
+    still = "until t = " + format_double(first) + " s";
+  } else {
+    still = "from t = " + format_double(last) + " s on";
+  }
+  std::string out = track + " " + covers + ", the run needs t = 0 to " + format_double(run_end_s) +
+                    " s: the camera stands still " + still;
+  const auto overlap = [&](double a, double b) {
+    return std::max(0.0, std::min(b, run_end_s) - std::max(a, 0.0));
+  };
+  if (time == TrackTime::kAsRecorded &&
+      overlap(0.0, last - first) > overlap(first, last) + slack_s) {
+    out +=
+        " (times are read as recorded, t = 0 the blast; camera.track_time = from_first_sample "
+        "starts the track at t = 0)";
+  }
+  return out;
+}
+
+std::optional<std::string> track_coverage_warning(const Scene& scene) {
+  if (scene.camera.mode != CameraMode::kTrack) return std::nullopt;
+  return track_coverage_warning(scene.camera.track_samples, scene.step_count() * scene.sim.dt_s,
+                                scene.camera.track_time, scene.camera.track_file);
 }
 
 }  // namespace fragsim

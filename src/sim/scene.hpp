@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "debris/debris_def.hpp"
+#include "geometry/axis_convention.hpp"
 #include "geometry/camera_pose.hpp"
 #include "strategies/strategy_settings.hpp"
 
@@ -110,6 +111,11 @@ enum class CameraMode {
   kPlayer,  // a seeded model of a person with a gamepad
 };
 
+// How a camera track's times are read: as recorded (t = 0 is the blast, as in fragsim's own
+// camera.csv and play recordings), or shifted so that its first sample is t = 0 (an engine's
+// export stamped with the engine's clock).
+enum class TrackTime { kAsRecorded, kFromFirstSample };
+
 // The scene's camera: how it moves (mode, path, track, player model), its frustum, body and
 // speed. Each step's CameraPose is made from it; CameraLimits are what it declares to strategies.
 struct CameraDef {
@@ -126,6 +132,12 @@ struct CameraDef {
   // strategy in the file).
   std::string track_file;
   std::string track_strategy;
+  // track: the file's clock and frame (geometry/axis_convention.hpp), turned into fragsim's on
+  // load.
+  TrackTime track_time = TrackTime::kAsRecorded;
+  double track_unit_m = 1.0;
+  UpAxis track_up = UpAxis::kY;
+  Handedness track_handedness = Handedness::kRight;
   // The track's samples, read from track_file when the scene is loaded (camera_track_file.hpp),
   // so a bad file fails before anything runs. Not a scene key.
   std::vector<CameraSample> track_samples;
@@ -144,6 +156,7 @@ struct CameraDef {
   Eigen::Vector3d body_size_m{0.3, 0.2, 0.3};  // the camera's body, a box centred on the eye
 
   FrustumDef frustum_def() const { return {fovy_deg, aspect, near_m, far_m}; }
+  AxisConvention track_frame() const { return {track_unit_m, track_up, track_handedness}; }
 };
 
 // Settings of the metrics (they observe a run and never change it).

@@ -2,11 +2,14 @@
 
 #include "debris/mesh_file.hpp"
 #include "io/number_format.hpp"
+#include "io/visible_text.hpp"
 #include "settings/key.hpp"
 #include "sim/camera_track_file.hpp"
 #include "sim/explosion.hpp"
+#include "sim/key_relevance.hpp"
 #include "sim/scene_strategies.hpp"
 
+#include <algorithm>
 #include <boost/program_options/errors.hpp>
 #include <boost/program_options/value_semantic.hpp>
 #include <charconv>
@@ -200,6 +203,18 @@ std::vector<KeySpec> keys_before_strategies() {
          text("track_strategy",
               "track: the rows whose `strategy` column has this value (empty: the file's first)",
               &D::track_strategy),
+         choice("track_time",
+                "track: the file's times as recorded (t = 0 is the blast), or shifted so its "
+                "first sample is t = 0 (an engine's clock)",
+                &D::track_time,
+                {{"as_recorded", TrackTime::kAsRecorded},
+                 {"from_first_sample", TrackTime::kFromFirstSample}}),
+         real("track_unit_m", "m", "track: metres per file unit of the eye (0.01: centimetres)",
+              &D::track_unit_m, open_closed(0, 1000)),
+         choice("track_up", "track: the file's up axis (z: Unreal, Blender)", &D::track_up,
+                {{"y", UpAxis::kY}, {"z", UpAxis::kZ}}),
+         choice("track_handedness", "track: the file's handedness (left: Unity, Unreal)",
+                &D::track_handedness, {{"right", Handedness::kRight}, {"left", Handedness::kLeft}}),
          real_or_inf("player_interval_s", "s",
                      "player: mean time between changes of the intended velocity and view target "
                      "(inf: never)",
@@ -289,7 +304,7 @@ std::map<std::string, std::vector<int>> index_lines(const std::string& text,
     if (s.front() == '[') {
       if (s.back() != ']' || s.size() < 3) {
         throw SceneError(origin + ":" + std::to_string(number) + ": malformed section header '" +
-                         s + "'");
+                         visible_text(s) + "'");
       }
       section = trim(s.substr(1, s.size() - 2));
       continue;
@@ -297,7 +312,7 @@ std::map<std::string, std::vector<int>> index_lines(const std::string& text,
     const auto eq = s.find('=');
     if (eq == std::string::npos || trim(s.substr(0, eq)).empty()) {
       throw SceneError(origin + ":" + std::to_string(number) + ": expected 'key = value', got '" +
-                       s + "'");
+                       visible_text(s) + "'");
     }
     const std::string key = trim(s.substr(0, eq));
     where[section.empty() ? key : section + "." + key].push_back(number);
@@ -315,8 +330,51 @@ std::string line_of(const std::map<std::string, std::vector<int>>& where, const 
 void apply(const std::vector<KeySpec>& keys, Scene& scene, const std::string& key,
            const std::string& value, const std::string& where) {
   const KeySpec* spec = find_key(keys, key);
-  if (!spec) throw SceneError(where + ": unknown key '" + key + "'");
-  settings::apply<SceneError>(*spec, scene, value, where);
+  if (!spec) throw SceneError(where + ": unknown key '" + visible_text(key) + "'");
+  try {
+    spec->parse(scene, value);
+  } catch (const ValueError& e) {
+    // settings::apply's message, with the value made visible: a NUL would end it.
+    throw SceneError(
+        settings::bad_text_message(where, spec->name, visible_text(trim(value)), e.rule));
+  }
+}
+
+// A key the user set, and where: "scene.ini:3" or "--camera.near_m".
+struct SetKey {
+  std::string key;
+  std::string where;
+  std::string value;
+};
+
+// Whether `key` is named in `message` as a whole name (not inside a longer one).
+bool names_key(const std::string& message, const std::string& key) {
+  for (auto at = message.find(key); at != std::string::npos; at = message.find(key, at + 1)) {
+    const auto end = at + key.size();
+    const bool starts = at == 0 || message[at - 1] == ' ' || message[at - 1] == '(';
+    const bool ends = end == message.size() || message[end] == ' ' || message[end] == ':' ||
+                      message[end] == ')' || message[end] == ',';
+    if (starts && ends) return true;
+  }
+  return false;
+}
+
+// A rule across keys broken: the message names the key it is about first ("a = 1: must be <= b =
+// 2"). When the user did not set that one but set another the message names, the other is the
+// one to change: the message is put at its place (file:line or --option).
+std::string placed(const std::string& message, const std::vector<SetKey>& set) {
+  const std::string subject = message.substr(0, message.find_first_of(" :"));
+  if (message.compare(subject.size(), 3, " = ") != 0) return message;  // not about a value
+  for (const SetKey& k : set) {
+    if (k.key == subject) return message;
+  }
+  for (const SetKey& k : set) {
+    if (names_key(message, k.key)) {
+      return k.where + ": " + k.key + " = " + visible_text(trim(k.value)) + " breaks a rule of " +
+             subject + ", which is not set (its default): " + message;
+    }
+  }
+  return message;
 }
 
 po::options_description options_of(const std::vector<KeySpec>& keys) {
@@ -382,11 +440,14 @@ void check_object_above_ground(const Scene& s) {
                    "ground.height_m = " + format_double(s.ground.height_m) +
                    ": the object must start wholly at or above the ground");
 }
+// config.ini's first line: fragsim wrote every key of the scene, those its modes make moot too.
+constexpr std::string_view kResolvedMark = "# fragsim scene, fully resolved";
 
 Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description& options,
                  const StrategyTable& table, const std::string& text, const std::string& origin,
-                 const std::vector<SceneOverride>& overrides) {
+                 const std::vector<SceneOverride>& overrides, std::vector<std::string>* warnings) {
   Scene scene;
+  std::vector<SetKey> set;
   if (!origin.empty() || !text.empty()) {
     const auto where = index_lines(text, origin);
     std::istringstream in(text);
@@ -406,7 +467,9 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
       const std::string line = line_of(where, o.string_key, n);
       const std::string at = origin + (line.empty() ? "" : ":" + line);
       if (n > 0) throw SceneError(at + ": " + o.string_key + " is set more than once");
-      apply(keys, scene, o.string_key, o.value.empty() ? std::string() : o.value.front(), at);
+      const std::string value = o.value.empty() ? std::string() : o.value.front();
+      apply(keys, scene, o.string_key, value, at);
+      set.push_back({o.string_key, at, value});
     }
     // A file a scene names (a mesh, a camera track) beside the scene file is found from
     // anywhere; held absolute, the scene's config.ini (and a worker's copy of the scene) still
@@ -416,13 +479,18 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
   }
   for (const SceneOverride& o : overrides) {
     apply(keys, scene, o.key, o.value, "--" + o.key);
+    set.push_back({o.key, "--" + o.key, o.value});
   }
   make_paths_absolute(scene, std::filesystem::path());
-  validate_scene(scene, table);
+  try {
+    validate_scene(scene, table);
+  } catch (const SceneError& e) {
+    throw SceneError(placed(e.what(), set));
+  }
   if (scene.camera.mode == CameraMode::kTrack) {
     try {
-      scene.camera.track_samples = load_camera_track(
-          scene.camera.track_file, scene.camera.track_strategy, scene.camera.max_speed_mps);
+      scene.camera.track_samples =
+          load_camera_track(scene.camera.track_file, track_reading(scene.camera));
     } catch (const InputError& e) {
       throw SceneError(std::string(e.what()) + " (camera.track_file)");
     }
@@ -436,13 +504,29 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
     }
   }
   check_object_above_ground(scene);
+  if (warnings) {
+    if (auto coverage = track_coverage_warning(scene)) warnings->push_back(*coverage);
+    // config.ini holds every key, so that any of its modes can be switched on again later.
+    if (text.rfind(kResolvedMark, 0) != 0) {
+      for (std::size_t i = 0; i < set.size(); ++i) {
+        const SetKey& k = set[i];
+        // A key set in the file and again on the command line is named once, where it won.
+        const auto later = std::find_if(set.begin() + static_cast<std::ptrdiff_t>(i) + 1, set.end(),
+                                        [&](const SetKey& o) { return o.key == k.key; });
+        if (later != set.end()) continue;
+        if (auto why = why_no_effect(scene, k.key)) {
+          warnings->push_back(k.where + ": " + k.key + " has no effect: " + *why);
+        }
+      }
+    }
+  }
   return scene;
 }
 
 std::string ini_of(const std::vector<KeySpec>& keys, const Scene& scene) {
   std::ostringstream out;
   std::string section;
-  out << "# fragsim scene, fully resolved\n";
+  out << kResolvedMark << "\n";
   for (const KeySpec& k : keys) {
     const auto dot = k.name.find('.');
     const std::string sec = dot == std::string::npos ? "" : k.name.substr(0, dot);
@@ -477,25 +561,27 @@ std::vector<SceneOverride> scene_overrides(const po::parsed_options& parsed) {
 }
 
 Scene parse_scene(const std::string& text, const std::string& origin,
-                  const std::vector<SceneOverride>& overrides) {
-  return parse_with(default_keys(), scene_options(), strategy_table(), text, origin, overrides);
+                  const std::vector<SceneOverride>& overrides, std::vector<std::string>* warnings) {
+  return parse_with(default_keys(), scene_options(), strategy_table(), text, origin, overrides,
+                    warnings);
 }
 
 Scene parse_scene(const std::string& text, const std::string& origin,
                   const std::vector<SceneOverride>& overrides, const StrategyTable& table) {
   const std::vector<KeySpec> keys = make_keys(table);
-  return parse_with(keys, options_of(keys), table, text, origin, overrides);
+  return parse_with(keys, options_of(keys), table, text, origin, overrides, nullptr);
 }
 
-Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
-  if (path.empty()) return parse_scene("", "", overrides);
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides,
+                 std::vector<std::string>* warnings) {
+  if (path.empty()) return parse_scene("", "", overrides, warnings);
   std::string text;
   try {
-    text = read_input_file(path, "scene file");
+    text = read_text_file(path, "scene file");
   } catch (const InputError& e) {
     throw SceneError(e.what());
   }
-  return parse_scene(text, path, overrides);
+  return parse_scene(text, path, overrides, warnings);
 }
 
 std::string scene_to_ini(const Scene& scene) {

@@ -37,12 +37,20 @@ struct SceneOverride {
 // The scene keys among options parsed from a command line that included scene_options().
 std::vector<SceneOverride> scene_overrides(const boost::program_options::parsed_options& parsed);
 
-// Defaults, then the file (if `path` is not empty), then the overrides; validated as a whole.
-Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
+// Defaults, then the file (if `path` is not empty), then the overrides; validated as a whole. A
+// rule across keys broken by a key the user set, against one left at its default, is reported at
+// the key set (file:line or --option). With `warnings`, gets one line each (without the
+// "warning: " prefix) for a camera track that does not cover the run (camera_track_file.hpp)
+// and for a key set in the file or as an override that has no effect in the modes chosen
+// (key_relevance.hpp), naming where it was set; a file written by scene_to_ini holds every key
+// and gets no warning of the second kind.
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {},
+                 std::vector<std::string>* warnings = nullptr);
 
 // The same from a string holding a scene file's text; `origin` names it in messages.
 Scene parse_scene(const std::string& text, const std::string& origin,
-                  const std::vector<SceneOverride>& overrides = {});
+                  const std::vector<SceneOverride>& overrides = {},
+                  std::vector<std::string>* warnings = nullptr);
 Scene parse_scene(const std::string& text, const std::string& origin,
                   const std::vector<SceneOverride>& overrides, const StrategyTable& table);
 

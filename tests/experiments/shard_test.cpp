@@ -380,5 +380,21 @@ TEST(ShardCommand, MergedSuiteSlicesAreTheUnshardedFileButForTheTimingColumn) {
   EXPECT_NE(mixed.out.find("a sweep slice;"), std::string::npos) << mixed.out;
 }
 
+// A slice saved with Windows line ends said "rows='4\r' is not a whole number": it is the same
+// slice. A NUL in its slice line is shown, not an end to the message.
+TEST(MergeSlices, WindowsLineEndsAreTheSameSliceAndControlCharactersAreShown) {
+  const auto crlf = [](SliceFile f) {
+    std::string out;
+    for (char c : f.bytes) out += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    f.bytes = out;
+    return f;
+  };
+  const std::string merged = merge_slices({slice("a", 0, 2, 4), slice("b", 1, 2, 4)});
+  EXPECT_EQ(merge_slices({crlf(slice("a", 0, 2, 4)), crlf(slice("b", 1, 2, 4))}), merged);
+  SliceFile bad = slice("a", 0, 1, 2);
+  bad.bytes.replace(bad.bytes.find("rows=2"), 6, std::string("rows=2\0", 7));
+  EXPECT_EQ(merge_error({bad}), "a:1: rows='2\\x00' is not a whole number");
+}
+
 }  // namespace
 }  // namespace fragsim

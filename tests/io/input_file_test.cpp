@@ -58,5 +58,14 @@ TEST(InputFile, WhatIsNotAReadableFileIsOneLineNamingThePathAndTheKind) {
   EXPECT_EQ(error_of("/dev/null"), "/dev/null: not a regular file, not a probe file");
 }
 
+// The tool's own text files saved with Windows line ends read as if saved with "\n" (a merge
+// slice so saved said "rows='4\r' is not a whole number"); a lone '\r' is text.
+TEST(InputFile, TextFilesReadCrlfAsLf) {
+  const std::string path = file_with("fragsim_crlf.txt", kMark + "a = 1\r\nb = 2\r\nc\rd\r\n");
+  EXPECT_EQ(read_text_file(path, "probe file"), "a = 1\nb = 2\nc\rd\n");
+  EXPECT_EQ(without_carriage_returns("\r\n\r\r\n"), "\n\r\n");
+  EXPECT_EQ(without_carriage_returns("x\r"), "x\r");
+}
+
 }  // namespace
 }  // namespace fragsim

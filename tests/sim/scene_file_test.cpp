@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include <cmath>
@@ -239,6 +240,98 @@ TEST(SceneFile, ExtremesFoundByThePropertyTestAreRefused) {
                 .find("camera.player_interval_s = 6.5e-09: the player would change course about"),
             std::string::npos);
   EXPECT_EQ(error_of("[camera]\nmode = player\nplayer_interval_s = 1e-6\n"), "");
+}
+
+std::vector<std::string> warnings_of(const std::string& text,
+                                     const std::vector<SceneOverride>& overrides = {}) {
+  std::vector<std::string> warnings;
+  parse_scene(text, "s.ini", overrides, &warnings);
+  return warnings;
+}
+
+// A key the user set that the scene's modes leave without effect is named with where it was set:
+// camera.track_file without camera.mode = track flew the default path without a word.
+TEST(SceneFile, KeysWithoutEffectAreWarnedWhereSet) {
+  EXPECT_EQ(warnings_of("[camera]\n\ntrack_file = /x/t.csv\n"),
+            std::vector<std::string>{"s.ini:3: camera.track_file has no effect: only camera.mode "
+                                     "= track reads a track, and camera.mode = path"});
+  EXPECT_EQ(warnings_of("", {{"ground.enabled", "off"}, {"ground.friction", "0.5"}}),
+            std::vector<std::string>{"--ground.friction: ground.friction has no effect: "
+                                     "ground.enabled = off: there is no ground"});
+  // Set in the file and again on the command line: named once, where it won.
+  EXPECT_EQ(
+      warnings_of("[object]\npieces = 50\n", {{"object.pieces", "60"}}),
+      std::vector<std::string>{"--object.pieces: object.pieces has no effect: only "
+                               "object.pattern = voronoi uses it, and object.pattern = grid"});
+  // Keys that take effect, and the strategies' keys, say nothing.
+  EXPECT_TRUE(warnings_of("[camera]\nnear_m = 0.2\n[object]\npattern = voronoi\npieces = 20\n"
+                          "[near-plane]\nmargin_m = 0.1\n")
+                  .empty());
+}
+
+// object.size_m with a mesh file is ignored: the pieces are the file's.
+TEST(SceneFile, CubeKeysWithAMeshAreWarned) {
+  const std::string mesh = ::testing::TempDir() + "/fragsim_tet.obj";
+  std::ofstream(mesh) << "o Tet\nv 0 0 0\nv 0.2 0 0\nv 0 0.2 0\nv 0 0 0.2\n"
+                         "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  EXPECT_EQ(warnings_of("[object]\nmesh_file = " + mesh + "\nsize_m = 2\n"),
+            std::vector<std::string>{"s.ini:3: object.size_m has no effect: the pieces come from "
+                                     "object.mesh_file, as the file makes them"});
+  std::remove(mesh.c_str());
+}
+
+// config.ini holds every key (any mode can be switched on again from it): it replays without a
+// warning, and as the same scene.
+TEST(SceneFile, WrittenSceneReplaysWithoutWarnings) {
+  const Scene s = parse_scene(
+      "[camera]\ntrack_file = /x/t.csv\nplayer_interval_s = 2\n"
+      "[ground]\nenabled = off\nfriction = 0.3\n",
+      "s.ini");
+  const std::string ini = scene_to_ini(s);
+  std::vector<std::string> warnings;
+  const Scene back = parse_scene(ini, "config.ini", {}, &warnings);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  EXPECT_EQ(scene_to_ini(back), ini);
+  EXPECT_EQ(back.ground.friction, 0.3);
+  // The same text without its first line is a hand-written scene, and is warned about.
+  const std::vector<std::string> unmarked = warnings_of(ini.substr(ini.find('\n') + 1));
+  EXPECT_TRUE(std::any_of(unmarked.begin(), unmarked.end(), [](const std::string& w) {
+    return w.rfind("s.ini:", 0) == 0 &&
+           w.find(
+               ": camera.track_file has no effect: only camera.mode = track reads a track, and "
+               "camera.mode = path") != std::string::npos;
+  }));
+}
+
+// camera.near_m = 1e-300 broke the near-plane strategy's rule and the message blamed
+// near-plane.min_near_m, a key the user never set, without file:line.
+TEST(SceneFile, RuleAcrossKeysIsPlacedAtTheKeySet) {
+  EXPECT_EQ(error_of("[camera]\nnear_m = 1e-300\n"),
+            "bad.ini:2: camera.near_m = 1e-300 breaks a rule of near-plane.min_near_m, which is "
+            "not set (its default): near-plane.min_near_m = 0.01: must be <= camera.near_m = "
+            "1e-300");
+  EXPECT_EQ(error_of("", {{"camera.near_m", "1e-300"}})
+                .rfind("--camera.near_m: camera.near_m = "
+                       "1e-300 breaks a rule of ",
+                       0),
+            0u);
+  // When the rule's own key was set, the message is as it was.
+  EXPECT_EQ(error_of("[camera]\nnear_m = 1e-300\n[near-plane]\nmin_near_m = 0.01\n"),
+            "near-plane.min_near_m = 0.01: must be <= camera.near_m = 1e-300");
+}
+
+TEST(SceneFile, WindowsLineEndsAndControlCharacters) {
+  const std::string path = ::testing::TempDir() + "/fragsim_crlf.ini";
+  std::ofstream(path, std::ios::binary) << "[camera]\r\nnear_m = 0.2\r\nmode = path\r\n";
+  EXPECT_EQ(load_scene(path).camera.near_m, 0.2);
+  std::remove(path.c_str());
+  // A NUL byte in a value is shown, and the message goes on past it.
+  EXPECT_EQ(error_of(std::string("[camera]\nnear_m = 0.\0"
+                                 "01x\n",
+                                 25)),
+            "bad.ini:2: camera.near_m = '0.\\x0001x': not a number");
+  EXPECT_EQ(error_of(std::string("[camera]\nnear\x01m\n", 16)),
+            "bad.ini:2: expected 'key = value', got 'near\\x01m'");
 }
 
 }  // namespace
