@@ -141,7 +141,8 @@ std::vector<KeySpec> keys_before_strategies() {
               "metres per unit of mesh_file's coordinates (0.01: centimetres, as Unreal and 3ds "
               "Max write)",
               &D::mesh_unit_m, open_closed(0, 1000)),
-         choice("mesh_up", "mesh_file's up axis (Unreal, Blender's OBJ: z; glTF, Unity: y)",
+         choice("mesh_up",
+                "mesh_file's up axis (Unreal: z; glTF, Unity, Blender's exporters by default: y)",
                 &D::mesh_up, {{"y", MeshUp::kY}, {"z", MeshUp::kZ}}),
          choice("mesh_handedness",
                 "mesh_file's handedness (Unreal, Unity: left; glTF, Blender: right)",
