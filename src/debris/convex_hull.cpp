@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <utility>
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
@@ -45,9 +46,15 @@ std::vector<int> loop_about(const std::vector<Eigen::Vector3d>& pts, std::vector
   c /= static_cast<double>(ids.size());
   const Eigen::Vector3d u = (pts[ids.front()] - c).normalized();
   const Eigen::Vector3d w = normal.cross(u);
-  std::vector<double> angle(pts.size(), 0.0);
-  for (int i : ids) angle[i] = std::atan2((pts[i] - c).dot(w), (pts[i] - c).dot(u));
-  std::sort(ids.begin(), ids.end(), [&](int a, int b) { return angle[a] < angle[b]; });
+  // Angles kept beside the ids, not in a table over all points: that table, one per facet, made a
+  // hull of 500,000 vertices quadratic. Sorted by angle alone, as the table was, so the order
+  // (ties included) is the one it gave.
+  std::vector<std::pair<double, int>> by_angle;
+  by_angle.reserve(ids.size());
+  for (int i : ids) by_angle.emplace_back(std::atan2((pts[i] - c).dot(w), (pts[i] - c).dot(u)), i);
+  std::sort(by_angle.begin(), by_angle.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = by_angle[k].second;
   return ids;
 }
 
@@ -129,13 +136,15 @@ std::shared_ptr<ConvexShape> scaled_shape(const ConvexShape& shape, double s) {
   return out;
 }
 
-HullPiece convex_hull(const std::vector<Eigen::Vector3d>& points_m) {
-  for (const auto& p : points_m) {
-    if (!p.allFinite()) throw DegenerateHull("a vertex is not finite");
-  }
-  if (points_m.size() < 4) {
-    throw DegenerateHull(std::to_string(points_m.size()) + " points: a solid needs at least 4");
-  }
+namespace {
+
+// The hull's vertices (input points) and faces, counter-clockwise from outside.
+struct Polyhedron {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+};
+
+Polyhedron qhull_of(const std::vector<Eigen::Vector3d>& points_m) {
   std::vector<coordT> coords;
   coords.reserve(3 * points_m.size());
   for (const auto& p : points_m) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
@@ -149,8 +158,7 @@ HullPiece convex_hull(const std::vector<Eigen::Vector3d>& points_m) {
   if (status != 0) throw DegenerateHull("the points are flat or collinear (no hull with volume)");
 
   std::vector<int> index_of(points_m.size(), -1);  // input point -> hull vertex
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::vector<int>> faces;
+  Polyhedron out;
   facetT* facet;
   vertexT* vertex;
   vertexT** vertexp;
@@ -159,16 +167,79 @@ HullPiece convex_hull(const std::vector<Eigen::Vector3d>& points_m) {
     FOREACHvertex_(facet->vertices) {
       const int p = qh_pointid(qh, vertex->point);
       if (index_of[p] < 0) {
-        index_of[p] = static_cast<int>(vertices.size());
-        vertices.push_back(points_m[p]);
+        index_of[p] = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(points_m[p]);
       }
       ids.push_back(index_of[p]);
     }
     const Eigen::Vector3d normal(facet->normal[0], facet->normal[1], facet->normal[2]);
-    faces.push_back(loop_about(vertices, std::move(ids), normal));
+    out.faces.push_back(loop_about(out.vertices, std::move(ids), normal));
   }
+  return out;
+}
+
+// At most `n` of the vertices, well spread over the hull: first the support point along each of
+// n directions of a Fibonacci lattice on the sphere (ties to the first vertex), then, while
+// fewer than n (a hull with sharp corners gives many directions the same vertex), the vertex
+// farthest from those chosen.
+std::vector<Eigen::Vector3d> spread_subset(const std::vector<Eigen::Vector3d>& v, int n) {
+  const double golden_angle = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+  std::vector<char> chosen(v.size(), 0);
+  std::vector<int> order;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / n;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    const Eigen::Vector3d u(r * std::cos(golden_angle * i), r * std::sin(golden_angle * i), z);
+    std::size_t best = 0;
+    double best_d = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double d = u.dot(v[k]);
+      if (d > best_d) {
+        best_d = d;
+        best = k;
+      }
+    }
+    if (!chosen[best]) {
+      chosen[best] = 1;
+      order.push_back(static_cast<int>(best));
+    }
+  }
+  std::vector<double> gap2(v.size(), std::numeric_limits<double>::infinity());
+  for (int c : order) {
+    for (std::size_t k = 0; k < v.size(); ++k)
+      gap2[k] = std::min(gap2[k], (v[k] - v[c]).squaredNorm());
+  }
+  while (static_cast<int>(order.size()) < n) {
+    const auto far = std::max_element(gap2.begin(), gap2.end());
+    if (!(*far > 0.0)) break;
+    const int c = static_cast<int>(far - gap2.begin());
+    order.push_back(c);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      gap2[k] = std::min(gap2[k], (v[k] - v[c]).squaredNorm());
+  }
+  std::vector<Eigen::Vector3d> out;
+  out.reserve(order.size());
+  for (int c : order) out.push_back(v[static_cast<std::size_t>(c)]);
+  return out;
+}
+
+}  // namespace
+
+HullPiece convex_hull(const std::vector<Eigen::Vector3d>& points_m) {
+  for (const auto& p : points_m) {
+    if (!p.allFinite()) throw DegenerateHull("a vertex is not finite");
+  }
+  if (points_m.size() < 4) {
+    throw DegenerateHull(std::to_string(points_m.size()) + " points: a solid needs at least 4");
+  }
+  Polyhedron hull = qhull_of(points_m);
   HullPiece out;
-  auto shape = shape_of_polyhedron(vertices, faces, &out.centre_m);
+  if (hull.vertices.size() > static_cast<std::size_t>(kMaxHullVertices)) {
+    out.full_vertices = static_cast<int>(hull.vertices.size());
+    out.full_volume_m3 = polyhedron_mass(hull.vertices, hull.faces).volume_m3;
+    hull = qhull_of(spread_subset(hull.vertices, kMaxHullVertices));
+  }
+  auto shape = shape_of_polyhedron(hull.vertices, hull.faces, &out.centre_m);
   if (!(shape->volume_m3 >= kMinHullVolume_m3)) {
     char v[32];
     std::snprintf(v, sizeof v, "%.3g", shape->volume_m3);

@@ -163,7 +163,7 @@ double piece_volume_m3(const Piece& piece) {
 }
 
 std::vector<Piece> make_pieces(const DebrisDef& def) {
-  if (!def.mesh_file.empty()) return read_pieces(def.mesh_file, def.density_kgpm3);
+  if (!def.mesh_file.empty()) return read_pieces(def.mesh_file, def.density_kgpm3, def.mesh_frame);
   return def.pattern == DebrisPattern::kVoronoi ? voronoi_pieces(def) : grid_pieces(def);
 }
 

@@ -10,17 +10,19 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
+#include "debris/gltf_load.hpp"
+#include "debris/obj_check.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
 
 // Vertices read as doubles, so a file written with 17 digits reads back exactly.
 #define TINYOBJLOADER_USE_DOUBLE
-#include <tiny_gltf.h>
 #include <tiny_obj_loader.h>
 
 namespace fragsim {
@@ -46,6 +48,7 @@ struct RawPiece {
 };
 
 std::vector<RawPiece> raw_obj(const std::string& text, const std::string& path) {
+  check_obj_text(text, path);
   std::istringstream in(text);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -150,54 +153,8 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
   }
 }
 
-// A glTF buffer's external file (its uri), read in place of tinygltf's own reader, which takes
-// the size a stream reports for whatever the uri names: a directory's (a fuzzed uri of "data",
-// run from the repository's root) came back as 2^63 bytes to allocate. Here, as for every input
-// file, only a regular file is read, and at most kMaxBufferBytes of it.
-constexpr std::uintmax_t kMaxBufferBytes = std::uintmax_t{1} << 30;
-
-bool read_buffer_file(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                      void*) {
-  const auto refuse = [&](const std::string& why) {
-    if (err != nullptr) *err += "buffer '" + path + "': " + why;
-    return false;
-  };
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return refuse("not a regular file");
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (ec) return refuse("cannot read its size");
-  if (size > kMaxBufferBytes) return refuse("larger than 1 GiB");
-  std::ifstream in(path, std::ios::binary);
-  out->resize(static_cast<std::size_t>(size));
-  if (!in || !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
-    return refuse("cannot read it");
-  }
-  return true;
-}
-
 std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path, bool binary) {
-  tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &read_buffer_file,
-                         &tinygltf::WriteWholeFile, nullptr});
-  tinygltf::Model model;
-  std::string err;
-  std::string warn;
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  bool ok = false;
-  // tinygltf reports most bad input in err, but not all: a .glb buffer of byteLength 0 beside a
-  // BIN chunk made it index an empty vector with at() (found by gltf_mesh_fuzz in CI), and a
-  // library's exception must reach the user as the same one line as its other refusals.
-  try {
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                              reinterpret_cast<const unsigned char*>(bytes.data()),
-                                              static_cast<unsigned int>(bytes.size()), dir)
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(),
-                                             static_cast<unsigned int>(bytes.size()), dir);
-  } catch (const std::exception& e) {
-    throw InputError(path + ": not a readable glTF file: the glTF reader failed (" +
-                     one_line(e.what()) + ")");
-  }
-  if (!ok) throw InputError(path + ": not a readable glTF file: " + one_line(err));
+  const tinygltf::Model model = load_gltf(bytes, path, binary);
 
   std::vector<int> roots;
   if (!model.scenes.empty()) {
@@ -267,16 +224,18 @@ void piece_polyhedron(const Piece& p, std::vector<Eigen::Vector3d>& v,
 
 }  // namespace
 
-std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3) {
+std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
+                               const MeshFrame& frame, std::vector<std::string>* warnings) {
   const std::string ext = extension_of(path);
   if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
     throw InputError(path + ": unknown mesh format '" + ext + "' (expected .obj, .gltf or .glb)");
   }
-  return parse_pieces(read_input_file(path, "mesh file"), path, density_kgpm3);
+  return parse_pieces(read_input_file(path, "mesh file"), path, density_kgpm3, frame, warnings);
 }
 
 std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
-                                double density_kgpm3) {
+                                double density_kgpm3, const MeshFrame& frame,
+                                std::vector<std::string>* warnings) {
   const std::string ext = extension_of(path);
   std::vector<RawPiece> raw;
   if (ext == ".obj") {
@@ -290,8 +249,15 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
   if (raw.size() > static_cast<std::size_t>(kMaxPieces)) {
     throw InputError(path + ": more than " + std::to_string(kMaxPieces) + " pieces");
   }
+  if (!frame.is_identity()) {
+    for (RawPiece& r : raw) {
+      for (Eigen::Vector3d& v : r.points_m) v = to_fragsim_frame(frame, v);
+    }
+  }
   std::vector<Piece> out;
   out.reserve(raw.size());
+  int reduced = 0;
+  double largest_change = 0.0;  // relative volume change of a simplified hull
   for (std::size_t i = 0; i < raw.size(); ++i) {
     // Beyond the scene's own reach (object.distance_m <= 1e6 m) a hull loses its small features
     // to rounding: a fuzzed tetrahedron at 1e31 m had volume 2e77 m^3 read, -8e74 written back.
@@ -303,6 +269,11 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
     }
     try {
       const HullPiece h = convex_hull(raw[i].points_m);
+      if (h.full_vertices > 0) {
+        ++reduced;
+        largest_change = std::max(
+            largest_change, std::abs(h.full_volume_m3 - h.shape->volume_m3) / h.full_volume_m3);
+      }
       Piece p;
       p.centre_m = h.centre_m;
       p.shape = h.shape;
@@ -312,6 +283,32 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
     } catch (const DegenerateHull& e) {
       throw InputError(path + ": piece " + std::to_string(i + 1) + " ('" + raw[i].name +
                        "'): " + e.what());
+    }
+  }
+  if (warnings != nullptr) {
+    char line[256];
+    if (reduced > 0) {
+      std::snprintf(line, sizeof line,
+                    ": %d piece%s hull%s reduced to %d vertices; largest volume change %.2g%%",
+                    reduced, reduced == 1 ? "'s" : "s'", reduced == 1 ? "" : "s", kMaxHullVertices,
+                    100.0 * largest_change);
+      warnings->push_back(path + line);
+    }
+    Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+    Eigen::Vector3d hi = -lo;
+    for (const RawPiece& r : raw) {
+      for (const Eigen::Vector3d& v : r.points_m) {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+      }
+    }
+    const double across_m = (hi - lo).maxCoeff();
+    if (frame.unit_m == 1.0 && across_m > kLargeObject_m) {
+      std::snprintf(line, sizeof line,
+                    ": the object is %.3g m across; if the file is in centimetres set "
+                    "object.mesh_unit_m = 0.01",
+                    across_m);
+      warnings->push_back(path + line);
     }
   }
   return out;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "debris/mesh_frame.hpp"
 #include "debris/piece.hpp"
 
 namespace fragsim {
@@ -13,18 +14,30 @@ namespace fragsim {
 // The farthest a piece's vertex may lie from the file's origin, per coordinate.
 inline constexpr double kMaxMeshCoordinate_m = 1e6;
 
-// The pieces of an .obj, .gltf or .glb file (by its extension), in the file's frame: each the
-// convex hull of its mesh's vertices (glTF: with the node's transform and its parents' applied),
-// of uniform density. Throws InputError, one line naming the file and, where it is one piece's
-// fault, the piece: not found or unreadable, not parsable, no mesh, more than kMaxPieces pieces,
-// a non-finite vertex or one beyond kMaxMeshCoordinate_m, a flat or zero-volume piece (below
-// kMinHullVolume_m3).
-std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3);
+// An object wider than this is more likely a file in centimetres read as metres (a 2 m crate
+// becomes 200 m) than a real one: read_pieces warns.
+inline constexpr double kLargeObject_m = 100.0;
+
+// The pieces of an .obj, .gltf or .glb file (by its extension), in the file's frame converted by
+// `frame` to fragsim's (metres, Y up, right-handed): each the convex hull of its mesh's vertices
+// (glTF: with the node's transform and its parents' applied; at most kMaxHullVertices vertices,
+// convex_hull.hpp), of uniform density. Throws InputError, one line naming the file and, where it
+// is one piece's fault, the piece or file:line: not found or unreadable, not parsable (an OBJ
+// coordinate that is not a finite number, a face index naming no vertex; a glTF uri outside the
+// file's folder or not a regular file, an unsupported required extension), no mesh, more than
+// kMaxPieces pieces, a non-finite vertex or one beyond kMaxMeshCoordinate_m, a flat or
+// zero-volume piece (below kMinHullVolume_m3). `warnings`, when given, gets one line per thing
+// worth saying that is no error, each starting with the path: hulls simplified (how many, the
+// largest volume change), an object over kLargeObject_m across at unit_m = 1.
+std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
+                               const MeshFrame& frame = {},
+                               std::vector<std::string>* warnings = nullptr);
 
 // The same from a file's bytes already in memory: `path` gives the format (its extension), the
 // name in messages and the folder a .gltf's external buffers are looked up in.
 std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
-                                double density_kgpm3);
+                                double density_kgpm3, const MeshFrame& frame = {},
+                                std::vector<std::string>* warnings = nullptr);
 
 // Each piece's hull (a grid piece's box) in the object's frame, one OBJ object `piece_<n>` per
 // piece with 17 significant digits, so the file reads back to the last bit of every vertex.

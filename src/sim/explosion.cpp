@@ -58,6 +58,7 @@ DebrisDef debris_def(const Scene& scene) {
   d.cluster = obj.cluster;
   d.blast_offset_m = scene.explosion.offset_m;
   d.mesh_file = obj.mesh_file;
+  d.mesh_frame = obj.mesh_frame();
   d.density_kgpm3 = obj.density_kgpm3;
   d.seed = scene.sim.seed;
   return d;

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -140,7 +141,18 @@ std::vector<KeySpec> keys_before_strategies() {
               "pieces from a mesh file (.obj, .gltf, .glb; one mesh per piece, each taken as its "
               "convex hull, the file's origin at centre_m) instead of pattern; a relative path is "
               "taken from the scene file's folder",
-              &D::mesh_file)});
+              &D::mesh_file),
+         real("mesh_unit_m", "m",
+              "metres per unit of mesh_file's coordinates (0.01: centimetres, as Unreal and 3ds "
+              "Max write)",
+              &D::mesh_unit_m, open_closed(0, 1000)),
+         choice("mesh_up",
+                "mesh_file's up axis (Unreal: z; glTF, Unity, Blender's exporters by default: y)",
+                &D::mesh_up, {{"y", MeshUp::kY}, {"z", MeshUp::kZ}}),
+         choice("mesh_handedness",
+                "mesh_file's handedness (Unreal, Unity: left; glTF, Blender: right)",
+                &D::mesh_handedness,
+                {{"right", MeshHandedness::kRight}, {"left", MeshHandedness::kLeft}})});
   }
   {
     using D = ExplosionDef;
@@ -497,8 +509,11 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
   }
   if (!scene.object.mesh_file.empty()) {
     try {
+      std::vector<std::string> warnings;
       scene.object.mesh_pieces = std::make_shared<const std::vector<Piece>>(
-          read_pieces(scene.object.mesh_file, scene.object.density_kgpm3));
+          read_pieces(scene.object.mesh_file, scene.object.density_kgpm3, scene.object.mesh_frame(),
+                      &warnings));
+      for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
     } catch (const InputError& e) {
       throw SceneError(std::string(e.what()) + " (object.mesh_file)");
     }

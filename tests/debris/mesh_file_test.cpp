@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
 #include "io/input_error.hpp"
 
@@ -138,6 +139,62 @@ TEST_F(MeshFile, GridPiecesWriteAsBoxes) {
     EXPECT_NEAR(b[i].mass_kg / a[i].mass_kg, 1.0, 1e-12);
     EXPECT_NEAR((b[i].half_extents_m - a[i].half_extents_m).norm(), 0.0, 1e-12);
   }
+}
+
+// A piece of 19,800 triangles (a UV sphere, as a modelling tool exports one; a 1e6-triangle sphere
+// hung ODE's convex set-up) comes out with at most kMaxHullVertices vertices, and the file gets
+// one warning saying so with the volume change. The small cube beside it is untouched.
+TEST_F(MeshFile, AManyTriangleSphereIsReducedWithOneWarning) {
+  std::string obj = kCubeObj;
+  obj += "o Sphere\nv 0 0 1\nv 0 0 -1\n";
+  const int rings = 100;
+  const int segments = 100;
+  char line[96];
+  for (int r = 1; r < rings; ++r) {
+    for (int s = 0; s < segments; ++s) {
+      const double theta = M_PI * r / rings;
+      const double phi = 2 * M_PI * s / segments;
+      std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", std::sin(theta) * std::cos(phi),
+                    std::sin(theta) * std::sin(phi), std::cos(theta));
+      obj += line;
+    }
+  }
+  // Vertex k of ring r (1-based rings) is 8 (the cube's) + 2 (poles) + (r - 1) segments + k + 1.
+  const auto at = [&](int r, int k) { return 11 + (r - 1) * segments + (k % segments); };
+  for (int k = 0; k < segments; ++k) {
+    obj += "f 9 " + std::to_string(at(1, k)) + " " + std::to_string(at(1, k + 1)) + "\n";
+    obj += "f 10 " + std::to_string(at(rings - 1, k + 1)) + " " + std::to_string(at(rings - 1, k)) +
+           "\n";
+    for (int r = 1; r + 1 < rings; ++r) {
+      obj += "f " + std::to_string(at(r, k)) + " " + std::to_string(at(r + 1, k)) + " " +
+             std::to_string(at(r + 1, k + 1)) + " " + std::to_string(at(r, k + 1)) + "\n";
+    }
+  }
+  const std::string path = write("sphere.obj", obj);
+  std::vector<std::string> warnings;
+  const std::vector<Piece> p = read_pieces(path, 1.0, {}, &warnings);
+  ASSERT_EQ(p.size(), 2u);
+  EXPECT_EQ(p[0].shape->vertices_m.size(), 8u);
+  EXPECT_NEAR(p[0].mass_kg, 1.0, 1e-12);
+  EXPECT_LE(p[1].shape->vertices_m.size(), static_cast<std::size_t>(kMaxHullVertices));
+  // Within 3% of the sphere's volume (convex_hull_test: the bound for a sphere).
+  EXPECT_NEAR(p[1].mass_kg / (4 * M_PI / 3), 1.0, 0.03);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].rfind(path + ": 1 piece's hull reduced to 255 vertices; largest volume "
+                                     "change 2.",
+                              0),
+            0u)
+      << warnings[0];
+}
+
+// Pieces from the built-in fracture stay far below the limit, so none is simplified and no
+// number of a Voronoi scene moves.
+TEST_F(MeshFile, VoronoiCellsAreFarBelowTheVertexLimit) {
+  DebrisDef d = some_cells();
+  d.pieces = 2000;
+  std::size_t most = 0;
+  for (const Piece& p : make_pieces(d)) most = std::max(most, p.shape->vertices_m.size());
+  EXPECT_LT(most, static_cast<std::size_t>(kMaxHullVertices) / 2);
 }
 
 TEST_F(MeshFile, EachBadInputIsOneLineNamingFileAndPiece) {
