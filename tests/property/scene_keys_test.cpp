@@ -21,7 +21,6 @@
 #include <map>
 #include <optional>
 #include <random>
-#include <regex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -66,23 +65,67 @@ double number(const std::string& text) {
   return std::strtod(text.c_str(), nullptr);
 }
 
+// The interval in "... must be in [lo, hi)" at the end of `message`, with an optional
+// ", or inf" after it when `inf_suffix` allows. Parsed by hand: GCC 12 warns inside <regex>
+// (maybe-uninitialized) under -O1, and the sanitizer build treats warnings as errors.
+bool parse_interval(const std::string& message, bool inf_suffix, KeyRule& r) {
+  const std::string lead = "must be in ";
+  const std::size_t at = message.find(lead);
+  if (at == std::string::npos) return false;
+  std::size_t i = at + lead.size();
+  if (i >= message.size() || (message[i] != '[' && message[i] != '(')) return false;
+  const char open = message[i++];
+  const std::size_t comma = message.find(", ", i);
+  if (comma == std::string::npos || comma == i) return false;
+  const std::size_t close = message.find_first_of("])", comma + 2);
+  if (close == std::string::npos || close == comma + 2) return false;
+  std::string rest = message.substr(close + 1);
+  bool inf = false;
+  if (inf_suffix && rest == ", or inf") {
+    inf = true;
+    rest.clear();
+  }
+  if (!rest.empty()) return false;
+  r.lo_open = open == '(';
+  r.lo = number(message.substr(i, comma - i));
+  r.hi = number(message.substr(comma + 2, close - comma - 2));
+  r.hi_open = message[close] == ')';
+  r.inf_allowed = inf;
+  return true;
+}
+
+// "... must be a whole number in [lo, hi]" at the end of `message`.
+bool parse_whole(const std::string& message, KeyRule& r) {
+  const std::string lead = "must be a whole number in [";
+  const std::size_t at = message.find(lead);
+  if (at == std::string::npos || message.empty() || message.back() != ']') return false;
+  const std::size_t from = at + lead.size();
+  const std::size_t comma = message.find(", ", from);
+  if (comma == std::string::npos) return false;
+  r.lo = number(message.substr(from, comma - from));
+  r.hi = number(message.substr(comma + 2, message.size() - 1 - comma - 2));
+  return true;
+}
+
+// The word after "expected " and before " numbers", or empty.
+std::string count_word(const std::string& message) {
+  const std::string lead = "expected ";
+  const std::size_t at = message.find(lead);
+  if (at == std::string::npos) return "";
+  const std::size_t from = at + lead.size();
+  const std::size_t space = message.find(' ', from);
+  if (space == std::string::npos || message.compare(space, 8, " numbers") != 0) return "";
+  return message.substr(from, space - from);
+}
+
 // The key's rule, from what it says of values out of any range; nullopt for keys without one
 // (names, file names, lists of points).
 std::optional<KeyRule> rule_of(const std::string& key) {
-  static const std::regex interval(R"(must be in ([\[(])([^,]+), ([^\])]+)([\])])(, or inf)?$)");
-  static const std::regex whole(R"(must be a whole number in \[(-?\d+), (-?\d+)\]$)");
-  static const std::regex expected(R"(: expected (.+)$)");
   KeyRule r;
   r.name = key;
-  std::smatch m;
   const std::string big = message_for(key, "1e308");
-  if (std::regex_search(big, m, interval)) {
+  if (parse_interval(big, true, r)) {
     r.kind = KeyRule::Kind::kReal;
-    r.lo_open = m[1] == "(";
-    r.lo = number(m[2]);
-    r.hi = number(m[3]);
-    r.hi_open = m[4] == ")";
-    r.inf_allowed = m[5].matched;
     return r;
   }
   if (big.find("must be a whole number in [0, 2^64)") != std::string::npos) {
@@ -90,44 +133,41 @@ std::optional<KeyRule> rule_of(const std::string& key) {
     return r;
   }
   const std::string huge = message_for(key, "1000000000000");
-  if (std::regex_search(huge, m, whole)) {
+  if (parse_whole(huge, r)) {
     r.kind = KeyRule::Kind::kInteger;
-    r.lo = number(m[1]);
-    r.hi = number(m[2]);
     return r;
   }
   // A fixed count of numbers ("expected three numbers x y z", "expected four numbers ..."),
   // each in one interval.
   const std::map<std::string, int> counts = {{"two", 2}, {"three", 3}, {"four", 4}};
-  if (std::regex_search(big, m, std::regex(R"(expected (\w+) numbers)")) && counts.count(m[1])) {
-    r.count = counts.at(m[1]);
+  const std::string word = count_word(big);
+  if (counts.count(word)) {
+    r.count = counts.at(word);
     std::string many;
     for (int i = 0; i < r.count; ++i) many += (i ? " " : "") + std::string("1e308");
-    const std::string each = message_for(key, many);
-    if (std::regex_search(each, m, std::regex(R"(must be in ([\[(])([^,]+), ([^\])]+)([\])])$)"))) {
+    if (parse_interval(message_for(key, many), false, r)) {
       r.kind = KeyRule::Kind::kVector;
-      r.lo_open = m[1] == "(";
-      r.lo = number(m[2]);
-      r.hi = number(m[3]);
-      r.hi_open = m[4] == ")";
       return r;
     }
   }
   const std::string odd = message_for(key, "#");
-  if (std::regex_search(odd, m, expected) && m[1] != "three numbers x y z") {
-    r.kind = KeyRule::Kind::kChoice;
-    const std::string list = m[1];
-    if (list == "on or off") {
-      r.choices = {"on", "off"};
-    } else {
-      for (std::size_t at = 0;;) {
-        const std::size_t bar = list.find(" | ", at);
-        r.choices.push_back(list.substr(at, bar - at));
-        if (bar == std::string::npos) break;
-        at = bar + 3;
+  const std::size_t expected_at = odd.find(": expected ");
+  if (expected_at != std::string::npos) {
+    const std::string list = odd.substr(expected_at + 11);
+    if (!list.empty() && list != "three numbers x y z") {
+      r.kind = KeyRule::Kind::kChoice;
+      if (list == "on or off") {
+        r.choices = {"on", "off"};
+      } else {
+        for (std::size_t at = 0;;) {
+          const std::size_t bar = list.find(" | ", at);
+          r.choices.push_back(list.substr(at, bar - at));
+          if (bar == std::string::npos) break;
+          at = bar + 3;
+        }
       }
+      return r;
     }
-    return r;
   }
   return std::nullopt;
 }
