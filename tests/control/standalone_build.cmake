@@ -4,9 +4,16 @@
 # Then the C API's tests (tests/control/api) as their own project, which takes the library's
 # folder with add_subdirectory as a game's tree would; and, when CLANG_CC is given, the same with
 # clang, -Werror and ThreadSanitizer (the library and the thread test).
+#
+# Every configure runs under standalone_guard.cmake, which fails it if anything beyond Eigen (and
+# Threads, for the thread test) is looked for. The built shared library must need nothing but
+# the C and C++ runtimes, and its sources must see no include folder but its own and Eigen's.
+# With DUMPS (dumps of `fragsim run --dump-control`, joined by "|"), the C replay program is
+# built against each standalone install (gcc's and clang's) and must reproduce the tool's
+# forces bit for bit: the standalone build keeps -ffp-contract=off.
 #   cmake -DSOURCE_DIR=src/control -DEXAMPLE_DIR=examples/minimal_c -DAPI_TESTS_DIR=tests/control/api
-#         -DWORK_DIR=<scratch> -DCXX=<c++ compiler> -DCC=<c compiler>
-#         [-DCLANG_CXX=clang++ -DCLANG_CC=clang] -P standalone_build.cmake
+#         -DWORK_DIR=<scratch> -DCXX=<c++ compiler> -DCC=<c compiler> [-DREPLAY_SOURCE=replay.c
+#         -DDUMPS=a.bin|b.bin] [-DCLANG_CXX=clang++ -DCLANG_CC=clang] -P standalone_build.cmake
 foreach(var SOURCE_DIR EXAMPLE_DIR API_TESTS_DIR WORK_DIR CXX CC)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "standalone_build.cmake: ${var} not set")
@@ -21,27 +28,95 @@ function(run what)
   message(STATUS "${what}: ok")
 endfunction()
 
+set(GUARD ${CMAKE_CURRENT_LIST_DIR}/standalone_guard.cmake)
+
+# The shared library's NEEDED entries: the C and C++ runtimes only.
+function(check_needed library)
+  execute_process(COMMAND readelf -d ${library} RESULT_VARIABLE status OUTPUT_VARIABLE dynamic)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "readelf -d ${library} failed")
+  endif()
+  string(REGEX MATCHALL "Shared library: \\[[A-Za-z0-9_.+-]+\\]" needed "${dynamic}")
+  foreach(entry ${needed})
+    string(REGEX REPLACE "Shared library: \\[(.*)\\]" "\\1" name "${entry}")
+    if(NOT name MATCHES "^(libstdc\\+\\+|libm|libgcc_s|libc|ld-linux.*)\\.so")
+      message(FATAL_ERROR "${library} needs ${name}: the library alone may need only the C and "
+                          "C++ runtimes")
+    endif()
+  endforeach()
+  string(REPLACE "Shared library: " "" needed "${needed}")
+  message(STATUS "${library} needs ${needed}")
+endfunction()
+
+# Every include folder the library's sources are compiled with: its own, or Eigen's.
+function(check_include_dirs build_dir)
+  file(READ ${build_dir}/compile_commands.json commands)
+  string(JSON count LENGTH "${commands}")
+  math(EXPR last "${count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON command GET "${commands}" ${i} command)
+    string(REGEX MATCHALL "(-I|-isystem )[^ ]+" dirs "${command}")
+    foreach(dir ${dirs})
+      string(REGEX REPLACE "^(-I|-isystem )" "" dir "${dir}")
+      string(FIND "${dir}" "${SOURCE_DIR}" at)
+      if(NOT at EQUAL 0 AND NOT dir MATCHES "eigen3$")
+        message(FATAL_ERROR "the library is compiled with the include folder ${dir}")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+# src/control alone with one compiler: configure under the guard, build, check, install to
+# ${WORK_DIR}/${name}-prefix, and replay the tool's dumps against the install.
+function(build_library_alone name cxx cc)
+  run("configure src/control alone (${name})" ${CMAKE_COMMAND} -S ${SOURCE_DIR}
+    -B ${WORK_DIR}/${name} -DCMAKE_CXX_COMPILER=${cxx} -DCMAKE_BUILD_TYPE=Release
+    -DFRAGSIM_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+    -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=${GUARD})
+  run("build (${name})" ${CMAKE_COMMAND} --build ${WORK_DIR}/${name} --parallel 2)
+  check_include_dirs(${WORK_DIR}/${name})
+  run("install (${name})" ${CMAKE_COMMAND} --install ${WORK_DIR}/${name}
+    --prefix ${WORK_DIR}/${name}-prefix)
+  file(GLOB shared ${WORK_DIR}/${name}-prefix/lib/libfragsim_control.so.*.*.*)
+  check_needed(${shared})
+  if(DEFINED DUMPS AND DEFINED REPLAY_SOURCE)
+    set(replay ${WORK_DIR}/${name}-replay)
+    run("build the replay against the install (${name})" ${cc} -std=c99 -O2 -Wall -Wextra
+      -Werror -o ${replay} ${REPLAY_SOURCE} -I${WORK_DIR}/${name}-prefix/include
+      -L${WORK_DIR}/${name}-prefix/lib -lfragsim_control -lm
+      -Wl,-rpath,${WORK_DIR}/${name}-prefix/lib)
+    string(REPLACE "|" ";" dumps "${DUMPS}")
+    foreach(dump ${dumps})
+      get_filename_component(dump_name ${dump} NAME_WE)
+      run("replay ${dump_name} bit for bit (${name})" ${replay} ${dump})
+      run("replay ${dump_name} bit for bit, arrays (${name})" ${replay} ${dump} --arrays)
+    endforeach()
+  endif()
+endfunction()
+
 file(REMOVE_RECURSE ${WORK_DIR})
-run("configure src/control alone" ${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/build
-  -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_BUILD_TYPE=Release -DFRAGSIM_WERROR=ON)
-run("build" ${CMAKE_COMMAND} --build ${WORK_DIR}/build --parallel 2)
-run("install" ${CMAKE_COMMAND} --install ${WORK_DIR}/build --prefix ${WORK_DIR}/prefix)
+build_library_alone(gcc ${CXX} ${CC})
+if(CLANG_CC AND CLANG_CXX)
+  build_library_alone(clang ${CLANG_CXX} ${CLANG_CC})
+endif()
 run("configure examples/minimal_c on the install" ${CMAKE_COMMAND} -S ${EXAMPLE_DIR}
-  -B ${WORK_DIR}/example -DCMAKE_C_COMPILER=${CC} -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix
+  -B ${WORK_DIR}/example -DCMAKE_C_COMPILER=${CC} -DCMAKE_PREFIX_PATH=${WORK_DIR}/gcc-prefix
   -DCMAKE_BUILD_TYPE=Release)
 run("build examples/minimal_c" ${CMAKE_COMMAND} --build ${WORK_DIR}/example)
 run("run examples/minimal_c" ${WORK_DIR}/example/minimal_c)
 
 run("configure tests/control/api alone (src/control by add_subdirectory)" ${CMAKE_COMMAND}
   -S ${API_TESTS_DIR} -B ${WORK_DIR}/api -DCMAKE_C_COMPILER=${CC} -DCMAKE_CXX_COMPILER=${CXX}
-  -DCMAKE_BUILD_TYPE=Release -DFRAGSIM_WERROR=ON)
+  -DCMAKE_BUILD_TYPE=Release -DFRAGSIM_WERROR=ON -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=${GUARD}
+  -DFRAGSIM_ALLOWED_PACKAGES=Eigen3,Threads)
 run("build tests/control/api" ${CMAKE_COMMAND} --build ${WORK_DIR}/api --parallel 2)
 run("run tests/control/api" ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/api --output-on-failure)
 if(CLANG_CC AND CLANG_CXX)
   run("configure tests/control/api with clang and ThreadSanitizer" ${CMAKE_COMMAND}
     -S ${API_TESTS_DIR} -B ${WORK_DIR}/tsan -DCMAKE_C_COMPILER=${CLANG_CC}
     -DCMAKE_CXX_COMPILER=${CLANG_CXX} -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFRAGSIM_WERROR=ON
-    -DFRAGSIM_API_TESTS_TSAN=ON)
+    -DFRAGSIM_API_TESTS_TSAN=ON -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=${GUARD}
+    -DFRAGSIM_ALLOWED_PACKAGES=Eigen3,Threads)
   run("build tests/control/api with clang and ThreadSanitizer" ${CMAKE_COMMAND}
     --build ${WORK_DIR}/tsan --parallel 2)
   run("run the thread test under ThreadSanitizer" ${CMAKE_COMMAND} -E env
