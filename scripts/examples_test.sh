@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The controller library as a game would take it: installs a build into a temporary prefix, then
-# builds and runs examples/minimal_c and examples/ode_world against the installed package only
-# (find_package(fragsim_control CONFIG)), the C example also through pkg-config, shared and static.
+# builds and runs examples/minimal_c, examples/ode_world and examples/bullet against the installed
+# package only (find_package(fragsim_control CONFIG)), the C example also through pkg-config,
+# shared and static.
 #   scripts/examples_test.sh [BUILD_DIR]     (default build/release)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -54,5 +55,13 @@ if pkg-config --exists ode; then
   "$work/ode_world/ode_world"
 else
   echo "examples_test: ODE not found by pkg-config: ode_world skipped" >&2
+fi
+
+# The controller in Bullet: exits 1 unless the blasts hit the camera without it and never with it.
+if pkg-config --exists bullet; then
+  build_example bullet
+  "$work/bullet/bullet_world"
+else
+  echo "examples_test: Bullet not found by pkg-config: bullet skipped" >&2
 fi
 echo "examples_test: ok"
