@@ -8,8 +8,8 @@ preset="${1:-release}"
 target=()
 [ $# -ge 2 ] && target=(--target "$2")
 
-packages=(cmake g++ make pkg-config libode-dev libeigen3-dev libboost-program-options-dev
-          googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev
+packages=(cmake g++ make pkg-config libode-dev libbullet-dev libeigen3-dev
+          libboost-program-options-dev googletest libgtest-dev libbenchmark-dev gnuplot-nox libpng-dev
           voro++-dev libqhull-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
           libsdl2-dev xvfb xdotool x11-apps python3)
 scripts/install_packages.sh "${packages[@]}"

@@ -1,0 +1,231 @@
+#include "blast_run.hpp"
+
+#include <fragsim/control.h>
+
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "bullet_world.hpp"
+#include "frame_clock.hpp"
+#include "near_plane_check.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One fragment as the library reads it, converted from Bullet's floats: the 0.5 API takes
+// doubles only (a float array would be read as garbage), so the example keeps this copy and
+// hands it over as strided arrays.
+struct FragmentDoubles {
+  double position_m[3];
+  double velocity_mps[3];
+  double radius_m;
+  double mass_kg;
+  uint64_t id;
+  double force_N[3];
+};
+
+fragsim_vec3 to_fragsim(Vec3 v) {
+  return {v.x, v.y, v.z};
+}
+
+// What Bullet's tick callbacks share, reached through the world's user info pointer.
+struct Substeps {
+  BulletWorld* physics = nullptr;
+  const CameraPath* camera_path = nullptr;
+  fragsim_controller_id controller{};  // null id: no controller
+  fragsim_step_input input = fragsim_default_step_input();
+  fragsim_fragment_arrays arrays{};
+  std::vector<FragmentDoubles> fragments;
+  std::vector<Vec3> centre_before_m;  // for the near-plane check
+  std::vector<char> hit, pushed;
+  NearRectangle near_rectangle;
+  CameraPose camera_start, camera_end;
+  double time_s = 0;  // the start of the substep being taken
+  int count = 0;
+  double callbacks_s = 0;
+  RunResult* result = nullptr;
+};
+
+// Before each fixed substep, inside stepSimulation: the state the last substep left, the camera
+// at this substep's start, one controller call, its forces applied for this substep only.
+void before_substep(btDynamicsWorld* world, btScalar substep_s) {
+  Substeps& s = *static_cast<Substeps*>(world->getWorldUserInfo());
+  const Clock::time_point started = Clock::now();
+  const double dt_s = substep_s;  // the step Bullet integrates, float included
+  s.camera_start = s.camera_path->at(s.time_s);
+  s.camera_end = s.camera_path->at(s.time_s + dt_s);
+  const int n = s.physics->fragment_count();
+  for (int i = 0; i < n; ++i) {
+    const btRigidBody& body = s.physics->fragment(i);
+    const btVector3& p = body.getCenterOfMassPosition();
+    const btVector3& v = body.getLinearVelocity();
+    FragmentDoubles& f = s.fragments[i];
+    f.position_m[0] = p.x(), f.position_m[1] = p.y(), f.position_m[2] = p.z();
+    f.velocity_mps[0] = v.x(), f.velocity_mps[1] = v.y(), f.velocity_mps[2] = v.z();
+    s.centre_before_m[i] = {f.position_m[0], f.position_m[1], f.position_m[2]};
+  }
+  if (!fragsim_controller_id_is_null(s.controller) && s.result->error.empty()) {
+    fragsim_step_input& in = s.input;
+    in.time_s = s.time_s;
+    in.dt_s = dt_s;
+    in.camera.eye_m = to_fragsim(s.camera_start.eye_m);
+    in.camera.right = to_fragsim(s.camera_start.right);
+    in.camera.up = to_fragsim(s.camera_start.up);
+    in.camera.forward = to_fragsim(s.camera_start.forward);
+    // The eye's velocity over this substep, from the path (not the rendered frame's pose).
+    in.camera.velocity_mps = to_fragsim((s.camera_end.eye_m - s.camera_start.eye_m) * (1 / dt_s));
+    fragsim_step_stats stats;
+    const Clock::time_point call = Clock::now();
+    const fragsim_status status =
+        fragsim_controller_step_arrays(s.controller, &in, &s.arrays, n, &stats);
+    s.result->controller_s += seconds_since(call);
+    if (status != FRAGSIM_OK) {
+      s.result->error = fragsim_controller_last_error(s.controller);
+    } else if (stats.skipped != 0) {
+      s.result->error = "the controller skipped fragments: the conversion handed it bad numbers";
+    } else {
+      s.result->capped += stats.capped;
+      s.result->warnings |= stats.warnings;
+      for (int i = 0; i < n; ++i) {
+        const double* force = s.fragments[i].force_N;
+        if (force[0] == 0 && force[1] == 0 && force[2] == 0) continue;
+        btRigidBody& body = s.physics->fragment(i);
+        // For this one substep only. stepSimulation clears forces once, after all the frame's
+        // substeps: a force applied here with applyCentralForce would push again in every later
+        // substep of the frame. Clearing forces in the post-tick instead would also clear the
+        // gravity Bullet adds once per frame (the frame's later substeps would fall without it).
+        // An impulse F dt_s changes the velocity now, before Bullet's semi-implicit Euler adds
+        // g dt_s and moves the body by its new velocity: exactly the force F held for one substep.
+        body.applyCentralImpulse(btVector3(static_cast<btScalar>(force[0] * dt_s),
+                                           static_cast<btScalar>(force[1] * dt_s),
+                                           static_cast<btScalar>(force[2] * dt_s)));
+        body.activate(true);  // Bullet does not integrate a sleeping body
+        s.pushed[i] = 1;
+      }
+    }
+  }
+  s.callbacks_s += seconds_since(started);
+}
+
+// After each fixed substep: every fragment's sweep over it against the near rectangle.
+void after_substep(btDynamicsWorld* world, btScalar substep_s) {
+  Substeps& s = *static_cast<Substeps*>(world->getWorldUserInfo());
+  const Clock::time_point started = Clock::now();
+  const CameraPose& a = s.camera_start;
+  const CameraPose& b = s.camera_end;
+  for (int i = 0; i < s.physics->fragment_count(); ++i) {
+    if (s.hit[i]) continue;  // a fragment counts once
+    const btVector3& p = s.physics->fragment(i).getCenterOfMassPosition();
+    const Vec3 before = to_camera_frame(s.centre_before_m[i], a.eye_m, a.right, a.up, a.forward);
+    const Vec3 after = to_camera_frame({p.x(), p.y(), p.z()}, b.eye_m, b.right, b.up, b.forward);
+    if (swept_sphere_meets(s.near_rectangle, before, after, s.physics->bounding_radius_m(i))) {
+      s.hit[i] = 1;
+      s.result->last_hit_s = s.time_s + substep_s;
+    }
+  }
+  s.time_s += substep_s;
+  ++s.count;
+  s.callbacks_s += seconds_since(started);
+}
+
+// The step input's parts that stay for the run: gravity as Bullet integrates it (a float), the
+// ground, the frustum, and the camera's declared bounds.
+void set_fixed_input(fragsim_step_input& in, const btVector3& gravity) {
+  in.gravity_mps2 = {gravity.x(), gravity.y(), gravity.z()};
+  in.ground_height_m = 0;
+  in.camera.fovy_deg = 60;
+  in.camera.aspect = 16.0 / 9.0;
+  in.camera.near_m = 0.1;
+  in.camera.far_m = 500;
+  in.camera.max_speed_mps = CameraBounds::max_speed_mps;
+  in.camera.max_accel_mps2 = CameraBounds::max_accel_mps2;
+  in.camera.max_turn_radps = CameraBounds::max_turn_radps;
+}
+
+fragsim_fragment_arrays strided_arrays(std::vector<FragmentDoubles>& fragments) {
+  constexpr size_t stride = sizeof(FragmentDoubles);
+  FragmentDoubles& f = fragments.front();
+  fragsim_fragment_arrays arrays{};
+  arrays.position_m = f.position_m, arrays.position_stride_bytes = stride;
+  arrays.velocity_mps = f.velocity_mps, arrays.velocity_stride_bytes = stride;
+  arrays.radius_m = &f.radius_m, arrays.radius_stride_bytes = stride;
+  arrays.mass_kg = &f.mass_kg, arrays.mass_stride_bytes = stride;
+  arrays.id = &f.id, arrays.id_stride_bytes = stride;
+  arrays.touched = nullptr;  // edge-min never reads contacts
+  arrays.force_N = f.force_N, arrays.force_stride_bytes = stride;
+  return arrays;
+}
+
+}  // namespace
+
+RunResult run_blast(const RunSettings& settings) {
+  RunResult result;
+  SeededDraws draws(settings.seed);
+  const CameraPath camera_path = make_camera_path(settings.move, draws);
+  FrameClock frame_clock(draws.next_seed());
+  BulletWorld physics(make_blast(camera_path.at(0).eye_m, kGravity_mps2, draws),
+                      settings.fragment_collisions);
+  const int n = physics.fragment_count();
+  result.fragments = n;
+
+  Substeps s;
+  s.physics = &physics;
+  s.camera_path = &camera_path;
+  s.result = &result;
+  s.fragments.resize(n);
+  s.centre_before_m.resize(n);
+  s.hit.assign(n, 0);
+  s.pushed.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    s.fragments[i].radius_m = physics.bounding_radius_m(i);
+    s.fragments[i].mass_kg = physics.mass_kg(i);
+    s.fragments[i].id = static_cast<uint64_t>(i);  // stable: Bullet's bodies never change order
+  }
+  s.arrays = strided_arrays(s.fragments);
+  set_fixed_input(s.input, physics.world().getGravity());
+  s.near_rectangle =
+      near_rectangle(s.input.camera.near_m, s.input.camera.fovy_deg, s.input.camera.aspect);
+
+  if (settings.protect) {
+    const fragsim_controller_def def = fragsim_default_controller_def();
+    char message[256];
+    if (fragsim_controller_create(&def, &s.controller, message, sizeof message) != FRAGSIM_OK) {
+      result.error = message;
+      return result;
+    }
+    // Room for the whole blast now, so its first substep (every id new) grows nothing.
+    if (fragsim_controller_reserve(s.controller, n) != FRAGSIM_OK) {
+      result.error = fragsim_controller_last_error(s.controller);
+      fragsim_controller_destroy(s.controller);
+      return result;
+    }
+  }
+
+  physics.world().setInternalTickCallback(before_substep, &s, /*isPreTick=*/true);
+  physics.world().setInternalTickCallback(after_substep, &s, /*isPreTick=*/false);
+  const int substeps = static_cast<int>(std::lround(kDuration_s / kSubstep_s));
+  double step_simulation_s = 0;
+  while (s.count < substeps && result.error.empty()) {
+    const double frame_s = frame_clock.next_frame_s();
+    const Clock::time_point call = Clock::now();
+    const int taken = physics.world().stepSimulation(static_cast<btScalar>(frame_s), kMaxSubsteps,
+                                                     static_cast<btScalar>(kSubstep_s));
+    step_simulation_s += seconds_since(call);
+    ++result.frames;
+    if (taken > kMaxSubsteps) result.error = "a frame needed more substeps than allowed";
+  }
+  fragsim_controller_destroy(s.controller);
+  result.substeps = s.count;
+  result.bullet_s = step_simulation_s - s.callbacks_s;
+  for (int i = 0; i < n; ++i) {
+    result.hit_fragments += s.hit[i];
+    result.pushed_fragments += s.pushed[i];
+  }
+  return result;
+}
