@@ -237,6 +237,7 @@ TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
   in.end_time_s = kInf;
   in.dt_s = kDt;
   in.ground_height_m = -kInf;  // no ground
+  in.ground_normal = {0.0, 1.0, 0.0};
   in.camera = fragsim_default_camera();
   in.camera.body_half_m = {0.15, 0.1, 0.15};
   in.fragments = frags.data();
