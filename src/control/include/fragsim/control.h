@@ -366,7 +366,9 @@ typedef enum fragsim_scalar_type {
  * fragment; with FLOAT, floats in each of these places. id: one uint64_t; touched: one uint8_t,
  * or NULL for "no contacts" (what the default edge-min needs). Each stride is at least its
  * element's size (24 bytes for 3 doubles, 12 for 3 floats, 8 for a double or an id, 4 for a
- * float, 1 for touched); a smaller one (0 included) is refused, FRAGSIM_ERROR_INVALID_ARGUMENT.
+ * float, 1 for touched); with count > 1 a smaller one (0 included) is refused,
+ * FRAGSIM_ERROR_INVALID_ARGUMENT, and a refused call writes zeros to force_N only when its
+ * scalar_type and (count > 1) force stride are valid: otherwise its layout is unknown.
  *
  * The number arrays are void pointers (since 0.6; const double* and double* before): one field
  * takes a double* or a float* without a cast in C and C++, where a union or a second set of
