@@ -73,6 +73,7 @@ Setup make_setup(int count, bool resting) {
   in.dt_s = scene.sim.dt_s;
   in.gravity_mps2 = vec(g);
   in.ground_height_m = scene.ground.height_m;
+  in.ground_normal = {0.0, 1.0, 0.0};  // the tool's world is y-up
   in.camera = fragsim_default_camera();
   in.camera.eye_m = vec(s.pose.eye_m);
   in.camera.right = vec(s.pose.right);

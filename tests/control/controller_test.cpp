@@ -40,6 +40,7 @@ fragsim_step_input still_input(const std::vector<fragsim_fragment>& fragments) {
   in.dt_s = kDt;
   in.gravity_mps2 = {0.0, 0.0, 0.0};
   in.ground_height_m = -10.0;
+  in.ground_normal = {0.0, 1.0, 0.0};  // a zero normal is refused (since 0.6)
   in.camera = fragsim_default_camera();
   in.fragments = fragments.data();
   in.fragment_count = static_cast<int32_t>(fragments.size());

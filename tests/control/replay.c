@@ -172,6 +172,10 @@ int main(int argc, char** argv) {
     in.camera.body_half_m = take_vec3(&r);
     in.gravity_mps2 = take_vec3(&r);
     in.ground_height_m = take_double(&r);
+    /* The tool's world is y-up (the dump carries no normal). */
+    in.ground_normal.x = 0.0;
+    in.ground_normal.y = 1.0;
+    in.ground_normal.z = 0.0;
     for (i = 0; i < n; ++i) {
       fragments[i].position_m = take_vec3(&r);
       fragments[i].velocity_mps = take_vec3(&r);
@@ -200,6 +204,7 @@ int main(int argc, char** argv) {
 
     if (use_arrays) {
       fragsim_fragment_arrays a;
+      memset(&a, 0, sizeof a); /* scalar_type 0: doubles */
       a.position_m = &fragments[0].position_m.x;
       a.position_stride_bytes = sizeof *fragments;
       a.velocity_mps = &fragments[0].velocity_mps.x;

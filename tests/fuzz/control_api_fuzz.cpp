@@ -122,6 +122,7 @@ struct Call {
   fragsim_step_input input{};
   std::vector<fragsim_fragment> fragments;
   bool arrays = false;
+  bool floats = false;  // arrays of floats (scalar_type FRAGSIM_SCALAR_FLOAT)
   int32_t count = 0;
   // The arrays' layout: each field at its own stride (a multiple of its size) in one buffer.
   std::size_t stride = 0;
@@ -137,6 +138,11 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
   if (in.ConsumeBool()) s.dt_s = number(in, 1e-6, 1.0);
   if (in.ConsumeBool()) s.gravity_mps2 = vec(in, -20, 20);
   if (in.ConsumeBool()) s.ground_height_m = number(in, -10, 10);
+  if (in.ConsumeBool()) {  // an axis (exact), or any vector: mostly not unit, then refused
+    const fragsim_vec3 axes[] = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, -1, 0}, {0, 0, 0}};
+    const int pick = in.ConsumeIntegralInRange<int>(0, 5);
+    s.ground_normal = pick < 5 ? axes[pick] : vec(in, -1, 1);
+  }
   fragsim_camera& cam = s.camera;
   if (in.ConsumeBool()) cam.eye_m = vec(in, -10, 10);
   if (in.ConsumeBool()) cam.velocity_mps = vec(in, -60, 60);
@@ -166,7 +172,29 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
   s.fragments = c.fragments.empty() ? nullptr : c.fragments.data();
   s.fragment_count = c.count;
   c.arrays = in.ConsumeBool();
-  if (c.arrays) {
+  c.floats = c.arrays && in.ConsumeBool();
+  if (c.floats) {
+    // One record per fragment in floats: position (0), velocity (12), radius (24), mass (28),
+    // id (32), touched (40), force (44, 3 floats), then 0 to 3 floats of padding (a stride that
+    // keeps the id's 8-byte alignment or not: the library reads unaligned ids by copying).
+    c.stride = 56 + 4 * in.ConsumeIntegralInRange<std::size_t>(0, 3);
+    c.buffer.assign(c.stride * static_cast<std::size_t>(n) + 1, 0);
+    for (int i = 0; i < n; ++i) {
+      unsigned char* r = c.buffer.data() + c.stride * static_cast<std::size_t>(i);
+      const fragsim_fragment& f = c.fragments[static_cast<std::size_t>(i)];
+      const float numbers[8] = {static_cast<float>(f.position_m.x),
+                                static_cast<float>(f.position_m.y),
+                                static_cast<float>(f.position_m.z),
+                                static_cast<float>(f.velocity_mps.x),
+                                static_cast<float>(f.velocity_mps.y),
+                                static_cast<float>(f.velocity_mps.z),
+                                static_cast<float>(f.radius_m),
+                                static_cast<float>(f.mass_kg)};
+      std::memcpy(r, numbers, sizeof numbers);
+      std::memcpy(r + 32, &f.id, sizeof(std::uint64_t));
+      std::memcpy(r + 40, &f.touched, 1);
+    }
+  } else if (c.arrays) {
     // One record per fragment: position (0), velocity (24), radius (48), mass (56), id (64),
     // touched (72), force (80, 3 doubles), then 0 to 3 doubles of padding.
     c.stride = 104 + 8 * in.ConsumeIntegralInRange<std::size_t>(0, 3);
@@ -197,7 +225,34 @@ Result run(fragsim_controller_id id, const Call& call_in, long fail_at) {
   std::vector<fragsim_vec3> forces(n, fragsim_vec3{7.0, 7.0, 7.0});
   fragsim_step_stats stats;
   std::memset(&stats, 0x5a, sizeof stats);
-  if (call.arrays) {
+  if (call.floats) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const float seven[3] = {7.0f, 7.0f, 7.0f};
+      std::memcpy(call.buffer.data() + call.stride * i + 44, seven, sizeof seven);
+    }
+    fragsim_fragment_arrays a{};
+    unsigned char* base = call.buffer.data();
+    a.scalar_type = FRAGSIM_SCALAR_FLOAT;
+    a.position_m = base;
+    a.velocity_mps = base + 12;
+    a.radius_m = base + 24;
+    a.mass_kg = base + 28;
+    a.id = reinterpret_cast<const std::uint64_t*>(base + 32);
+    a.touched = base + 40;
+    a.force_N = base + 44;
+    a.position_stride_bytes = a.velocity_stride_bytes = a.radius_stride_bytes = call.stride;
+    a.mass_stride_bytes = a.id_stride_bytes = a.touched_stride_bytes = call.stride;
+    a.force_stride_bytes = call.stride;
+    g_allocations = 0;
+    g_fail_at = fail_at;
+    r.status = fragsim_controller_step_arrays(id, &call.input, &a, call.count, &stats);
+    g_fail_at = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      float f[3];
+      std::memcpy(f, base + call.stride * i + 44, sizeof f);
+      r.forces.insert(r.forces.end(), f, f + 3);
+    }
+  } else if (call.arrays) {
     for (std::size_t i = 0; i < n; ++i) {
       const double seven[3] = {7.0, 7.0, 7.0};
       std::memcpy(call.buffer.data() + call.stride * i + 80, seven, sizeof seven);

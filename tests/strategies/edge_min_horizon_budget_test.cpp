@@ -133,7 +133,8 @@ TEST(EdgeMinBudget, TheCapSolvesTheSoonestToArriveAndDefersTheRest) {
   EXPECT_EQ(out.activity.deferred, 2);
   ASSERT_EQ(out.forces.size(), 1u);  // the deferred two were never solved: no last force
   EXPECT_EQ(out.forces[0].fragment, 1);
-  EXPECT_EQ(out.activity.candidates, std::vector<int>{1});
+  EXPECT_EQ(std::vector<int>(out.activity.candidates.begin(), out.activity.candidates.end()),
+            std::vector<int>{1});
 }
 
 // A deferred fragment keeps the force of the last step it was solved, to the bit.
@@ -237,6 +238,7 @@ TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
   in.end_time_s = kInf;
   in.dt_s = kDt;
   in.ground_height_m = -kInf;  // no ground
+  in.ground_normal = {0.0, 1.0, 0.0};
   in.camera = fragsim_default_camera();
   in.camera.body_half_m = {0.15, 0.1, 0.15};
   in.fragments = frags.data();

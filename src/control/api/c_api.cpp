@@ -7,7 +7,6 @@
 #include <cstring>
 #include <limits>
 #include <new>
-#include <string>
 
 #include "api/controller.hpp"
 #include "api/controller_slots.hpp"
@@ -24,6 +23,7 @@ using fragsim::control::ArraySource;
 using fragsim::control::Controller;
 using fragsim::control::Failure;
 using fragsim::control::find_controller;
+using fragsim::control::raw;
 using fragsim::control::StructSink;
 using fragsim::control::StructSource;
 
@@ -32,10 +32,10 @@ static_assert(kMaxFragments == std::numeric_limits<std::int32_t>::max() / 4);
 constexpr const char* kStaleMessage =
     "controller: a stale id (destroyed) or the null id (never created)";
 
-void copy_message(const std::string& text, char* message, std::size_t size) {
+void copy_message(const char* text, char* message, std::size_t size) {
   if (message == nullptr || size == 0) return;
-  const std::size_t n = std::min(text.size(), size - 1);
-  std::memcpy(message, text.data(), n);
+  const std::size_t n = std::min(std::strlen(text), size - 1);
+  std::memcpy(message, text, n);
   message[n] = '\0';
 }
 
@@ -117,6 +117,7 @@ FRAGSIM_API fragsim_step_input fragsim_default_step_input(void) {
   // No ground until the game says where it is: paths are then examined to horizon_cap_s, which
   // pushes no less than a known ground would.
   in.ground_height_m = -std::numeric_limits<double>::infinity();
+  in.ground_normal = {0.0, 1.0, 0.0};  // y up, as before 0.6
   in.camera = fragsim_default_camera();
   in.fragments = nullptr;
   in.fragment_count = 0;
@@ -155,17 +156,17 @@ FRAGSIM_API fragsim_status fragsim_controller_create(const fragsim_controller_de
   }
   Controller* c = nullptr;
   try {
-    c = new Controller(*def);
+    c = Controller::create(*def);
     const fragsim_controller_id id = fragsim::control::add_controller(c);
     if (id.index1 == 0) {
-      delete c;
+      Controller::destroy(c);
       copy_message("too many controllers: FRAGSIM_MAX_CONTROLLERS are alive", message,
                    message_size);
       return FRAGSIM_ERROR_OUT_OF_MEMORY;
     }
     *out_controller = id;
   } catch (...) {
-    delete c;
+    Controller::destroy(c);
     copy_message("out of memory", message, message_size);
     return FRAGSIM_ERROR_OUT_OF_MEMORY;
   }
@@ -177,7 +178,7 @@ FRAGSIM_API fragsim_status fragsim_controller_destroy(fragsim_controller_id cont
   if (controller.index1 == 0) return FRAGSIM_OK;
   Controller* c = fragsim::control::remove_controller(controller);
   if (c == nullptr) return FRAGSIM_ERROR_STALE_ID;
-  delete c;
+  Controller::destroy(c);
   return FRAGSIM_OK;
 }
 
@@ -250,9 +251,14 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id 
                                                           int32_t count,
                                                           fragsim_step_stats* stats) {
   if (stats != nullptr) *stats = {};
-  const bool count_ok = count >= 0 && count <= kMaxFragments;
+  // Zeros go to the force buffer only where its size is known: a valid count, scalar_type and
+  // (count > 1) force stride.
+  const bool count_ok = count >= 0 && count <= kMaxFragments &&
+                        (arrays == nullptr || fragsim::control::force_layout_known(
+                                                  *arrays, static_cast<std::size_t>(count)));
   const ArraySink sink{arrays != nullptr ? arrays->force_N : nullptr,
-                       arrays != nullptr ? arrays->force_stride_bytes : 0};
+                       arrays != nullptr ? arrays->force_stride_bytes : 0,
+                       arrays != nullptr && raw(arrays->scalar_type) == FRAGSIM_SCALAR_FLOAT};
   Controller* c = find_controller(controller);
   auto refuse = [&](fragsim_status s, const char* why) {
     if (count_ok) sink.zero(static_cast<std::size_t>(count));
@@ -262,7 +268,7 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id 
   if (c == nullptr) return refuse(FRAGSIM_ERROR_STALE_ID, kStaleMessage);
   if (input == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "input: NULL");
   if (arrays == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "arrays: NULL");
-  if (!count_ok) {
+  if (count < 0 || count > kMaxFragments) {
     char why[96];
     std::snprintf(why, sizeof why, "count = %d: must be in [0, %d]", static_cast<int>(count),
                   kMaxFragments);
@@ -270,6 +276,9 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id 
     return FRAGSIM_ERROR_INVALID_ARGUMENT;
   }
   const auto n = static_cast<std::size_t>(count);
+  if (Failure f = fragsim::control::validate_arrays(*arrays, n)) {
+    return refuse(f.status, f.message);
+  }
   if (n > 0) {
     const void* required[6] = {arrays->position_m, arrays->velocity_mps, arrays->radius_m,
                                arrays->mass_kg,    arrays->id,           arrays->force_N};
@@ -281,13 +290,15 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id 
       if (required[k] == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, names[k]);
     }
   }
-  return guarded_step(*c, *input, ArraySource{arrays}, n, sink, stats);
+  return guarded_step(*c, *input,
+                      ArraySource{arrays, raw(arrays->scalar_type) == FRAGSIM_SCALAR_FLOAT}, n,
+                      sink, stats);
 }
 
 FRAGSIM_API const char* fragsim_controller_last_error(fragsim_controller_id controller) {
   const Controller* c = find_controller(controller);
   if (c == nullptr) return kStaleMessage;
-  return c->error().c_str();
+  return c->error();
 }
 
 }  // extern "C"

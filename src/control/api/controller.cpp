@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <new>
 #include <span>
 
 #include "api/def_mapping.hpp"
 #include "api/fragment_io.hpp"
+#include "api/ground_frame.hpp"
 #include "strategies/deflect_all_strategy.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
@@ -19,29 +21,68 @@ Eigen::Vector3d vec(const fragsim_vec3& v) {
   return {v.x, v.y, v.z};
 }
 
+bool same_bits(const fragsim_vec3& a, const fragsim_vec3& b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
 }  // namespace
 
-Controller::Controller(const fragsim_controller_def& def) {
+Controller* Controller::create(const fragsim_controller_def& def) {
+  HookResource hook(def);
+  void* p = hook.allocate(sizeof(Controller), alignof(Controller));
+  try {
+    return new (p) Controller(def);
+  } catch (...) {
+    hook.deallocate(p, sizeof(Controller), alignof(Controller));
+    throw;
+  }
+}
+
+void Controller::destroy(Controller* c) noexcept {
+  if (c == nullptr) return;
+  HookResource hook = c->hook_;  // the same allocator, outliving the controller
+  c->~Controller();
+  hook.deallocate(c, sizeof(Controller), alignof(Controller));
+}
+
+void StrategyDelete::operator()(Strategy* s) const noexcept {
+  s->~Strategy();
+  mem->deallocate(s, size, align);
+}
+
+template <class S, class Params>
+S* Controller::make_strategy(const Params& params) {
+  void* p = mem_->allocate(sizeof(S), alignof(S));
+  S* s = nullptr;
+  try {
+    s = new (p) S(params, mem_);
+  } catch (...) {
+    mem_->deallocate(p, sizeof(S), alignof(S));
+    throw;
+  }
+  strategy_ = std::unique_ptr<Strategy, StrategyDelete>(s, {mem_, sizeof(S), alignof(S)});
+  return s;
+}
+
+Controller::Controller(const fragsim_controller_def& def) : hook_(def) {
   switch (raw(def.strategy)) {
-    case FRAGSIM_STRATEGY_EDGE_MIN: {
-      auto e = std::make_unique<EdgeMinStrategy>(edge_min_params(def));
-      edge_min_ = e.get();
-      strategy_ = std::move(e);
+    case FRAGSIM_STRATEGY_EDGE_MIN:
+      edge_min_ = make_strategy<EdgeMinStrategy>(edge_min_params(def));
       // The occlusion bound allocates inside its step, after changing its state.
       undo_safe_ = !(def.edge_min.cover_max < 1.0);
       break;
-    }
-    case FRAGSIM_STRATEGY_EDGE: {
-      auto e = std::make_unique<EdgeStrategy>(edge_params(def));
-      edge_ = e.get();
-      strategy_ = std::move(e);
+    case FRAGSIM_STRATEGY_EDGE:
+      edge_ = make_strategy<EdgeStrategy>(edge_params(def));
       break;
-    }
     case FRAGSIM_STRATEGY_DEFLECT_ALL:
-      strategy_ = std::make_unique<DeflectAllStrategy>(deflect_all_params(def));
+      make_strategy<DeflectAllStrategy>(deflect_all_params(def));
       break;
   }
   reset();
+}
+
+void Controller::set_error(const char* why) noexcept {
+  std::snprintf(error_, sizeof error_, "%s", why);
 }
 
 void Controller::reset() {
@@ -49,6 +90,7 @@ void Controller::reset() {
   last_ids_.clear();
   ids_[0].clear(0);
   ids_[1].clear(0);
+  has_normal_ = false;
 }
 
 void Controller::reserve(std::size_t n) {
@@ -70,8 +112,8 @@ void Controller::reserve_work(std::size_t n) {
   room_ = n;
 }
 
-fragsim_status Controller::failed(Failure f) {
-  error_ = std::move(f.message);
+fragsim_status Controller::failed(const Failure& f) {
+  set_error(f.message);
   return f.status;
 }
 
@@ -107,27 +149,28 @@ template <class Source, class Sink>
 fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
                                 const Sink& sink, fragsim_step_stats* stats) {
   // Phase 1: checks and room. Nothing here changes the controller's state.
-  if (Failure f = validate_step_input(in)) return failed(std::move(f));
+  if (Failure f = validate_step_input(in)) return failed(f);
   // The id table this step fills grows below, only if it must (a table grown here for nothing
   // would cost the first call its page faults).
   reserve_work(n);
+  const GroundFrame frame(in.ground_normal);
+  // The strategies' state is in the last step's frame: another normal starts afresh (below).
+  const bool new_frame = has_normal_ && !same_bits(in.ground_normal, last_normal_);
   std::size_t m = 0;
   int skipped = 0;
   int first_skipped = -1;
+  FragmentIn f;
   for (std::size_t i = 0; i < n; ++i) {
-    const double* p = src.position(i);
-    const double* v = src.velocity(i);
-    const double r = src.radius(i);
-    const double mass = src.mass(i);
-    if (!fragment_usable(p, v, r, mass)) {
+    src.read(i, f);
+    if (!fragment_usable(f.position_m, f.velocity_mps, f.radius_m, f.mass_kg)) {
       if (skipped++ == 0) first_skipped = static_cast<int>(i);
       continue;
     }
     FragmentState& s = states_[m];
-    s.position_m = {p[0], p[1], p[2]};
-    s.velocity_mps = {v[0], v[1], v[2]};
-    s.radius_m = r;
-    s.mass_kg = mass;
+    s.position_m = frame.in({f.position_m[0], f.position_m[1], f.position_m[2]});
+    s.velocity_mps = frame.in({f.velocity_mps[0], f.velocity_mps[1], f.velocity_mps[2]});
+    s.radius_m = f.radius_m;
+    s.mass_kg = f.mass_kg;
     s.touched = src.touched(i);
     caller_index_[m] = static_cast<std::int32_t>(i);
     ids_now_[m] = src.id(i);
@@ -136,8 +179,8 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
 
   // Ids: the same list as the last step (the usual case, an engine passing its array every step)
   // needs neither the duplicate check nor a re-index: that step already passed both.
-  const bool same_ids =
-      last_ids_.size() == m && std::equal(last_ids_.begin(), last_ids_.end(), ids_now_.begin());
+  const bool same_ids = !new_frame && last_ids_.size() == m &&
+                        std::equal(last_ids_.begin(), last_ids_.end(), ids_now_.begin());
   int new_ids = 0;
   int dropped_ids = 0;
   IdTable& now = ids_[1 - last_];
@@ -154,7 +197,8 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     }
     int kept = 0;
     for (std::size_t k = 0; k < m; ++k) {
-      previous_[k] = ids_[last_].find(ids_now_[k]);
+      // A new frame: every fragment new, as after a reset (the state kept is in the old frame).
+      previous_[k] = new_frame ? -1 : ids_[last_].find(ids_now_[k]);
       if (previous_[k] < 0) {
         ++new_ids;
       } else {
@@ -172,27 +216,30 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
   ctx.end_time_s = in.end_time_s;
   const fragsim_camera& c = in.camera;
-  ctx.camera.eye_m = vec(c.eye_m);
-  ctx.camera.right = vec(c.right);
-  ctx.camera.up = vec(c.up);
-  ctx.camera.forward = vec(c.forward);
+  ctx.camera.eye_m = frame.in(vec(c.eye_m));
+  ctx.camera.right = frame.in(vec(c.right));
+  ctx.camera.up = frame.in(vec(c.up));
+  ctx.camera.forward = frame.in(vec(c.forward));
   ctx.camera.fovy_deg = c.fovy_deg;
   ctx.camera.aspect = c.aspect;
   ctx.camera.near_m = c.near_m;
   ctx.camera.far_m = c.far_m;
-  ctx.camera_velocity_mps = vec(c.velocity_mps);
+  ctx.camera_velocity_mps = frame.in(vec(c.velocity_mps));
   ctx.camera_max_speed_mps = c.max_speed_mps;
   // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound: passed on as it is.
   ctx.camera_max_accel_mps2 = c.max_accel_mps2;
   ctx.camera_max_turn_radps = c.max_turn_radps;
-  ctx.camera_body_half_m = vec(c.body_half_m);
-  ctx.gravity_mps2 = vec(in.gravity_mps2);
+  ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes: not rotated
+  ctx.gravity_mps2 = frame.in(vec(in.gravity_mps2));
   ctx.ground_height_m = in.ground_height_m;
   ctx.fragments = std::span<const FragmentState>(states_.data(), m);
 
   // Phase 2: the strategy, in the room made above.
   const std::span<const int> previous(previous_.data(), m);
   try {
+    // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
+    // frame resets it as reset() would (its failure below forgets everything too).
+    if (new_frame && !undo_safe_) strategy_->reset(0);
     if (!same_ids && edge_ != nullptr) edge_->carry_over(previous);
     if (!same_ids && edge_min_ != nullptr) edge_min_->carry_over(previous);
     out_.clear();
@@ -201,12 +248,12 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     if (undo_safe_) {
       if (!same_ids && edge_ != nullptr) edge_->undo_carry_over();
       if (!same_ids && edge_min_ != nullptr) edge_min_->undo_carry_over();
-      error_ = "out of memory";
+      set_error("out of memory");
     } else {
       reset();
-      error_ =
+      set_error(
           "out of memory inside the occlusion bound's step (edge_min.cover_max < 1): every "
-          "fragment was forgotten, as after fragsim_controller_reset";
+          "fragment was forgotten, as after fragsim_controller_reset");
     }
     return FRAGSIM_ERROR_OUT_OF_MEMORY;
   }
@@ -216,7 +263,7 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     if (!a.force_N.allFinite() || a.fragment < 0 || static_cast<std::size_t>(a.fragment) >= m) {
       // A bug: the strategy's state is not to be trusted after it, so nothing is kept.
       reset();
-      error_ = "internal: a strategy produced a non-finite force or a bad index";
+      set_error("internal: a strategy produced a non-finite force or a bad index");
       return FRAGSIM_ERROR_INTERNAL;
     }
   }
@@ -224,7 +271,7 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   int pushed = 0;
   for (const AppliedForce& a : out_.forces) {
     const auto k = static_cast<std::size_t>(a.fragment);
-    sink.set(static_cast<std::size_t>(caller_index_[k]), a.force_N);
+    sink.set(static_cast<std::size_t>(caller_index_[k]), frame.out(a.force_N));
     if (!a.force_N.isZero(0.0)) ++pushed;
   }
   int unprotected = 0;
@@ -235,6 +282,8 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     last_ = 1 - last_;
     last_ids_.assign(ids_now_.begin(), ids_now_.begin() + static_cast<std::ptrdiff_t>(m));
   }
+  last_normal_ = in.ground_normal;
+  has_normal_ = true;
   const std::uint32_t warnings = camera_warnings(c);
   if (warnings != 0) warn_once(warnings, c);
   if (stats != nullptr) {
@@ -251,7 +300,7 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     stats->unprotected = unprotected;
     stats->warnings = warnings;
   }
-  error_.clear();
+  clear_error();
   return FRAGSIM_OK;
 }
 

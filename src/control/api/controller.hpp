@@ -8,12 +8,18 @@
 // allocates nothing; should it still run out of memory (the occlusion bound, edge-min's
 // cover_max < 1, allocates as it steps), the re-indexing by id is undone, or, where the strategy
 // had already changed its state, every fragment is forgotten and the message says so.
+//
+// Everything it allocates, itself included, comes from its HookResource: the def's allocator
+// hook, or operator new and delete. The strategies run in the frame of the step's ground normal
+// (GroundFrame); the state they keep per fragment lives in that frame, so a step with another
+// normal than the last successful one forgets every fragment first.
 
 #include <cstdint>
 #include <memory>
-#include <string>
+#include <memory_resource>
 #include <vector>
 
+#include "api/hook_resource.hpp"
 #include "api/id_table.hpp"
 #include "api/input_checks.hpp"
 #include "fragsim/control.h"
@@ -27,9 +33,21 @@ class EdgeMinStrategy;
 
 namespace fragsim::control {
 
+// Destroys a strategy allocated from a controller's resource.
+struct StrategyDelete {
+  std::pmr::memory_resource* mem = nullptr;
+  std::size_t size = 0;
+  std::size_t align = 0;
+  void operator()(Strategy* s) const noexcept;
+};
+
 class Controller {
  public:
-  explicit Controller(const fragsim_controller_def& def);
+  // A controller in memory from the def's allocator (a valid def): throws std::bad_alloc, having
+  // freed what it took, when that fails.
+  static Controller* create(const fragsim_controller_def& def);
+  // Destroys it and gives its memory back to the allocator it came from.
+  static void destroy(Controller* c) noexcept;
 
   // Forgets every fragment; keeps the room made.
   void reset();
@@ -43,44 +61,53 @@ class Controller {
   fragsim_status step(const fragsim_step_input& in, const Source& source, std::size_t n,
                       const Sink& sink, fragsim_step_stats* stats);
 
-  const std::string& error() const { return error_; }
-  // Never throws: a message that cannot be stored is dropped (the status still says why).
-  void set_error(const char* why) noexcept {
-    try {
-      error_ = why;
-    } catch (...) {
-      error_.clear();
-    }
-  }
-  void clear_error() { error_.clear(); }
+  const char* error() const { return error_; }
+  // A fixed buffer: storing a message allocates nothing and cannot fail (a longer one is cut).
+  void set_error(const char* why) noexcept;
+  void clear_error() noexcept { error_[0] = '\0'; }
 
  private:
-  fragsim_status failed(Failure f);
+  explicit Controller(const fragsim_controller_def& def);
+  ~Controller() = default;
+  Controller(const Controller&) = delete;
+  Controller& operator=(const Controller&) = delete;
+
+  template <class S, class Params>
+  S* make_strategy(const Params& params);
+
+  fragsim_status failed(const Failure& f);
   // reserve() but for the id tables.
   void reserve_work(std::size_t n);
   void warn_once(std::uint32_t warnings, const fragsim_camera& camera);
 
-  std::unique_ptr<Strategy> strategy_;
+  HookResource hook_;  // first: everything below is allocated from it
+  std::pmr::memory_resource* mem_ = &hook_;
+  std::unique_ptr<Strategy, StrategyDelete> strategy_;
   EdgeStrategy* edge_ = nullptr;         // the same object, when it keeps per-fragment state
   EdgeMinStrategy* edge_min_ = nullptr;  // likewise (its budget's last forces)
   bool undo_safe_ = true;                // a failure inside the strategy's step changed nothing
-  std::string error_;
+  char error_[Failure::kMessageSize] = {};
   std::uint32_t warned_ = 0;  // FRAGSIM_WARNING_* bits seen (printed once each in debug builds)
 
   // Work space kept between calls. The fragments usable this step, in the caller's order with the
-  // skipped ones left out: their states, their places in the caller's arrays and their ids.
-  std::vector<FragmentState> states_;
-  std::vector<std::int32_t> caller_index_;
-  std::vector<std::uint64_t> ids_now_;
-  std::vector<int> previous_;  // this step's fragment k was previous_[k] at the last step, or -1
-  StepOutput out_;
+  // skipped ones left out: their states (in the strategies' frame), their places in the caller's
+  // arrays and their ids.
+  std::pmr::vector<FragmentState> states_{mem_};
+  std::pmr::vector<std::int32_t> caller_index_{mem_};
+  std::pmr::vector<std::uint64_t> ids_now_{mem_};
+  std::pmr::vector<int> previous_{
+      mem_};  // this step's fragment k was previous_[k] last step, or -1
+  StepOutput out_{mem_};
   std::size_t room_ = 0;  // the fragment count reserve() made room for
 
   // The state kept between calls: the last successful step's ids, in order, and as a table; the
-  // other table is this step's.
-  IdTable ids_[2];
+  // other table is this step's; and the ground normal the strategies' state is in (none yet: any
+  // first step is in its frame).
+  IdTable ids_[2] = {IdTable(mem_), IdTable(mem_)};
   int last_ = 0;
-  std::vector<std::uint64_t> last_ids_;
+  std::pmr::vector<std::uint64_t> last_ids_{mem_};
+  fragsim_vec3 last_normal_ = {0.0, 0.0, 0.0};
+  bool has_normal_ = false;
 };
 
 }  // namespace fragsim::control

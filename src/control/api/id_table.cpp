@@ -9,7 +9,7 @@ void IdTable::reserve(std::size_t n) {
   while (capacity < 2 * n) capacity *= 2;
   if (capacity <= slots_.size()) return;
   // Built aside: if the allocation throws, nothing here has changed.
-  IdTable grown;
+  IdTable grown(slots_.get_allocator().resource());  // the same resource: the move below steals
   grown.slots_.resize(capacity);
   grown.mask_ = capacity - 1;
   for (const Slot& s : slots_) {

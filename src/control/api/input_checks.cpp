@@ -15,12 +15,13 @@
 namespace fragsim::control {
 
 Failure fail(fragsim_status status, const char* format, ...) {
-  char buffer[320];
+  Failure f;
+  f.status = status;
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buffer, sizeof buffer, format, args);
+  std::vsnprintf(f.message, sizeof f.message, format, args);
   va_end(args);
-  return {status, buffer};
+  return f;
 }
 
 namespace {
@@ -87,6 +88,13 @@ Failure validate_def(const fragsim_controller_def& def) {
     return fail(FRAGSIM_ERROR_DEF_NOT_DEFAULTED,
                 "def: not initialised with fragsim_default_controller_def()");
   }
+  if ((def.alloc_fn == nullptr) != (def.free_fn == nullptr)) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "%s: NULL while %s is set: give both (the game's allocator) or neither (operator "
+                "new and delete)",
+                def.alloc_fn == nullptr ? "alloc_fn" : "free_fn",
+                def.alloc_fn == nullptr ? "free_fn" : "alloc_fn");
+  }
   Failure f;
   // The shared fields first, whichever strategy is chosen: a def is valid as a whole.
   const auto& em_keys = fragsim::edge_min_param_spec();
@@ -150,6 +158,21 @@ Failure validate_def(const fragsim_controller_def& def) {
 
 namespace {
 
+// The ground's normal: finite and of unit length within the camera axes' tolerance. A zero normal
+// is what a zero-initialised input holds; it has no direction to default from.
+Failure validate_ground_normal(const fragsim_vec3& n) {
+  if (Failure f = check_vec(n, "ground_normal", finite, "must be finite")) return f;
+  const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+  if (!(std::abs(length - 1.0) <= kFrameTolerance)) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "ground_normal has length %.9g: must be 1 (within 1e-6), e.g. (0, 1, 0) y-up or "
+                "(0, 0, 1) z-up (start from fragsim_default_step_input(), not a zero-initialised "
+                "input)",
+                length);
+  }
+  return {};
+}
+
 Failure validate_frame(const fragsim_camera& c) {
   const fragsim_vec3* axes[3] = {&c.right, &c.up, &c.forward};
   const char* names[3] = {"camera.right", "camera.up", "camera.forward"};
@@ -198,6 +221,7 @@ Failure validate_step_input(const fragsim_step_input& in) {
       (f = check(finite(in.ground_height_m) ||
                      in.ground_height_m == -std::numeric_limits<double>::infinity(),
                  "ground_height_m", in.ground_height_m, "must be finite, or -INFINITY for none")) ||
+      (f = validate_ground_normal(in.ground_normal)) ||
       (f = check_vec(c.eye_m, "camera.eye_m", finite, "must be finite")) ||
       (f = validate_frame(c)) ||
       (f = check_vec(c.velocity_mps, "camera.velocity_mps", finite, "must be finite")) ||
@@ -215,6 +239,57 @@ Failure validate_step_input(const fragsim_step_input& in) {
       (f = check(bound(c.max_turn_radps), "camera.max_turn_radps", c.max_turn_radps,
                  "must be >= 0, INFINITY or FRAGSIM_UNDECLARED"))) {
     return f;
+  }
+  return {};
+}
+
+namespace {
+
+struct StrideRule {
+  const char* name;
+  std::size_t stride_bytes;
+  std::size_t element_bytes;
+  const char* element;
+};
+
+}  // namespace
+
+bool force_layout_known(const fragsim_fragment_arrays& a, std::size_t count) {
+  const int type = raw(a.scalar_type);
+  if (type != FRAGSIM_SCALAR_DOUBLE && type != FRAGSIM_SCALAR_FLOAT) return false;
+  const std::size_t scalar = type == FRAGSIM_SCALAR_FLOAT ? sizeof(float) : sizeof(double);
+  return count <= 1 || a.force_stride_bytes >= 3 * scalar;
+}
+
+Failure validate_arrays(const fragsim_fragment_arrays& a, std::size_t count) {
+  const int type = raw(a.scalar_type);
+  if (type != FRAGSIM_SCALAR_DOUBLE && type != FRAGSIM_SCALAR_FLOAT) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "arrays.scalar_type = %d: must be a fragsim_scalar_type (FRAGSIM_SCALAR_DOUBLE or "
+                "FRAGSIM_SCALAR_FLOAT)",
+                type);
+  }
+  // One element has no stride to speak of: a caller passing a single fragment may leave them 0.
+  if (count <= 1) return {};
+  const bool floats = type == FRAGSIM_SCALAR_FLOAT;
+  const std::size_t scalar = floats ? sizeof(float) : sizeof(double);
+  const char* three = floats ? "3 floats" : "3 doubles";
+  const char* one = floats ? "a float" : "a double";
+  const StrideRule rules[] = {
+      {"arrays.position_stride_bytes", a.position_stride_bytes, 3 * scalar, three},
+      {"arrays.velocity_stride_bytes", a.velocity_stride_bytes, 3 * scalar, three},
+      {"arrays.radius_stride_bytes", a.radius_stride_bytes, scalar, one},
+      {"arrays.mass_stride_bytes", a.mass_stride_bytes, scalar, one},
+      {"arrays.id_stride_bytes", a.id_stride_bytes, sizeof(std::uint64_t), "a uint64_t"},
+      {"arrays.touched_stride_bytes", a.touched == nullptr ? 1 : a.touched_stride_bytes, 1,
+       "a uint8_t"},
+      {"arrays.force_stride_bytes", a.force_stride_bytes, 3 * scalar, three}};
+  for (const StrideRule& r : rules) {
+    if (r.stride_bytes < r.element_bytes) {
+      return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                  "%s = %zu: must be at least the %zu bytes of %s, or the elements overlap", r.name,
+                  r.stride_bytes, r.element_bytes, r.element);
+    }
   }
   return {};
 }

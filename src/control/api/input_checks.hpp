@@ -3,17 +3,19 @@
 // rule: a def when a controller is created, a step's input at every step, and one fragment's
 // numbers (a fragment that breaks them is skipped, not refused: engines hand over what they have).
 
+#include <cstddef>
 #include <cstdint>
-#include <string>
 
 #include "fragsim/control.h"
 
 namespace fragsim::control {
 
-// A failed check: the status and the message that goes with it.
+// A failed check: the status and the message that goes with it, in a fixed buffer (a check
+// allocates nothing, so a controller with an allocator hook never reaches operator new).
 struct Failure {
+  static constexpr std::size_t kMessageSize = 320;
   fragsim_status status = FRAGSIM_OK;
-  std::string message;
+  char message[kMessageSize] = {};
   explicit operator bool() const { return status != FRAGSIM_OK; }
 };
 
@@ -21,6 +23,12 @@ struct Failure {
 
 Failure validate_def(const fragsim_controller_def& def);
 Failure validate_step_input(const fragsim_step_input& in);
+// The strided arrays' scalar_type, and their strides when count > 1 (each at least its element's
+// size). The pointers are the caller's to check.
+Failure validate_arrays(const fragsim_fragment_arrays& arrays, std::size_t count);
+// Whether the force buffer's layout is known (scalar_type, and the force stride when count > 1,
+// valid), so that a refused call may write count zeros to it.
+bool force_layout_known(const fragsim_fragment_arrays& arrays, std::size_t count);
 
 // Whether one fragment's numbers keep fragsim_fragment's rules: a finite position and velocity,
 // a finite radius and mass, both >= 0.

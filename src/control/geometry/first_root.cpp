@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory_resource>
+#include <new>
 #include <span>
 #include <tuple>
 #include <vector>
@@ -413,14 +415,38 @@ struct FirstNonpositiveBatch::Work {
     std::size_t entry_count = 0;
     int crossing = -1;  // the quartic search
   };
-  std::vector<std::optional<double>> out;
-  std::vector<Pending> pending;
-  std::vector<BracketedSearch<3>> cubic_searches;
-  std::vector<BracketedSearch<4>> quartic_searches;
-  std::vector<Quartic> derivatives;
+  explicit Work(std::pmr::memory_resource* m) : mem(m) {}
+  Work(const Work&) = delete;
+  // The contents only: each keeps its own resource.
+  void copy_from(const Work& o) {
+    out = o.out;
+    pending = o.pending;
+    cubic_searches = o.cubic_searches;
+    quartic_searches = o.quartic_searches;
+    derivatives = o.derivatives;
+  }
+  std::pmr::memory_resource* const mem;
+  std::pmr::vector<std::optional<double>> out{mem};
+  std::pmr::vector<Pending> pending{mem};
+  std::pmr::vector<BracketedSearch<3>> cubic_searches{mem};
+  std::pmr::vector<BracketedSearch<4>> quartic_searches{mem};
+  std::pmr::vector<Quartic> derivatives{mem};
+
+  // A Work allocated from mem, as everything it holds.
+  static Work* make(std::pmr::memory_resource* mem) {
+    void* p = mem->allocate(sizeof(Work), alignof(Work));
+    return new (p) Work(mem);  // cannot throw: the vectors start empty
+  }
 };
 
-FirstNonpositiveBatch::FirstNonpositiveBatch() : work_(std::make_unique<Work>()) {}
+void FirstNonpositiveBatch::Release::operator()(Work* w) const {
+  std::pmr::memory_resource* mem = w->mem;
+  w->~Work();
+  mem->deallocate(w, sizeof(Work), alignof(Work));
+}
+
+FirstNonpositiveBatch::FirstNonpositiveBatch(std::pmr::memory_resource* mem)
+    : work_(Work::make(mem)) {}
 FirstNonpositiveBatch::~FirstNonpositiveBatch() = default;
 
 void FirstNonpositiveBatch::reserve(std::size_t n) {
@@ -432,9 +458,11 @@ void FirstNonpositiveBatch::reserve(std::size_t n) {
   work_->quartic_searches.reserve(n);
 }
 FirstNonpositiveBatch::FirstNonpositiveBatch(const FirstNonpositiveBatch& other)
-    : work_(std::make_unique<Work>(*other.work_)) {}
+    : work_(Work::make(other.work_->mem)) {
+  work_->copy_from(*other.work_);
+}
 FirstNonpositiveBatch& FirstNonpositiveBatch::operator=(const FirstNonpositiveBatch& other) {
-  if (this != &other) *work_ = *other.work_;
+  if (this != &other) work_->copy_from(*other.work_);
   return *this;
 }
 

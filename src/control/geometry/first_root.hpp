@@ -13,6 +13,7 @@
 
 #include <array>
 #include <memory>
+#include <memory_resource>
 #include <optional>
 #include <span>
 #include <vector>
@@ -52,7 +53,8 @@ std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi);
 // operations where one search alone waits on each. Keeps its work space between calls.
 class FirstNonpositiveBatch {
  public:
-  FirstNonpositiveBatch();
+  // Its work space is allocated from `mem`.
+  explicit FirstNonpositiveBatch(std::pmr::memory_resource* mem = std::pmr::get_default_resource());
   ~FirstNonpositiveBatch();
   FirstNonpositiveBatch(const FirstNonpositiveBatch&);
   FirstNonpositiveBatch& operator=(const FirstNonpositiveBatch&);
@@ -65,7 +67,10 @@ class FirstNonpositiveBatch {
 
  private:
   struct Work;
-  std::unique_ptr<Work> work_;
+  struct Release {
+    void operator()(Work* w) const;
+  };
+  std::unique_ptr<Work, Release> work_;
 };
 
 }  // namespace fragsim

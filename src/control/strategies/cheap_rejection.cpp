@@ -837,7 +837,7 @@ double interval_bound_s(double y_m, double vy_mps, double half_gy_mps2, double g
   return t[0];
 }
 
-TwoBoxClearance::TwoBoxClearance() {
+TwoBoxClearance::TwoBoxClearance(std::pmr::memory_resource* mem) : mem_(mem) {
 #if defined(FRAGSIM_WIDE_LANES)
   wide_ = __builtin_cpu_supports("avx2");
 #endif

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory_resource>
 #include <span>
 #include <vector>
 
@@ -35,6 +36,8 @@ bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, doub
 // path_clears_ball for many paths under one acceleration and one growth.
 class BallClearance {
  public:
+  explicit BallClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : mem_(mem) {}
   // Room for n paths, then each one set by index.
   void resize(std::size_t n);
   // Room for runs over up to n paths, set later by resize: such a run allocates nothing while at
@@ -69,11 +72,14 @@ class BallClearance {
     double b[5];
   };
   std::size_t size_ = 0;
-  std::vector<double> dx_, dy_, dz_, vx_, vy_, vz_, r0_, t_end_;  // padded to whole lanes
-  std::vector<double> tol_;
-  std::vector<char> clears_;
-  std::vector<Piece> pieces_;
-  std::vector<Piece> next_;
+  std::pmr::memory_resource* mem_;
+  // Padded to whole lanes.
+  std::pmr::vector<double> dx_{mem_}, dy_{mem_}, dz_{mem_}, vx_{mem_}, vy_{mem_}, vz_{mem_},
+      r0_{mem_}, t_end_{mem_};
+  std::pmr::vector<double> tol_{mem_};
+  std::pmr::vector<char> clears_{mem_};
+  std::pmr::vector<Piece> pieces_{mem_};
+  std::pmr::vector<Piece> next_{mem_};
 };
 
 // The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
@@ -97,6 +103,8 @@ struct BoxFrame {
 // straight from their states, the full test over those it left in doubt.
 class BoxClearance {
  public:
+  explicit BoxClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : mem_(mem) {}
   // One flag per fragment: 1 when, in `frame`, its path x(t) = position + velocity t + a t^2
   // clears lo - radius <= x(t) <= hi + radius. Valid until the next call.
   std::span<const char> run(std::span<const FragmentState> fragments, const BoxFrame& frame,
@@ -104,8 +112,9 @@ class BoxClearance {
                             const Eigen::Vector3d& hi_m, double t_end_s);
 
  private:
-  std::vector<char> clears_;
-  std::vector<std::int32_t> doubt_;  // fragments the first stage left in doubt
+  std::pmr::memory_resource* mem_;
+  std::pmr::vector<char> clears_{mem_};
+  std::pmr::vector<std::int32_t> doubt_{mem_};  // fragments the first stage left in doubt
 };
 
 // edge-min's whole rejection in one pass over the fragments: the protected box and, for the
@@ -124,7 +133,7 @@ class BoxClearance {
 class TwoBoxClearance {
  public:
   // The first tier four lanes wide where the processor has AVX2, else two (the same answers).
-  TwoBoxClearance();
+  explicit TwoBoxClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource());
   // For tests: the narrow lanes even where the wide ones are available (false).
   void use_wide_lanes(bool wide);
   struct Boxes {
@@ -160,11 +169,12 @@ class TwoBoxClearance {
 
  private:
   std::size_t size_ = 0;
-  std::vector<char> clears_;
-  std::vector<char> grown_clears_;
-  [[maybe_unused]] bool wide_ = false;  // unused where there are no wide lanes
-  std::vector<std::int32_t> doubt_;     // fragments the first tier left in doubt
-  std::vector<std::int32_t> unsettled_;
+  std::pmr::memory_resource* mem_;
+  std::pmr::vector<char> clears_{mem_};
+  std::pmr::vector<char> grown_clears_{mem_};
+  [[maybe_unused]] bool wide_ = false;          // unused where there are no wide lanes
+  std::pmr::vector<std::int32_t> doubt_{mem_};  // fragments the first tier left in doubt
+  std::pmr::vector<std::int32_t> unsettled_{mem_};
   std::size_t unsettled_count_ = 0;
   std::size_t doubts_ = 0;
   double max_radius_m_ = 0.0;

@@ -3,6 +3,7 @@
 // fragment's ballistic path against the ball the camera can reach before the fragment lands.
 
 #include <Eigen/Core>
+#include <memory_resource>
 #include <optional>
 #include <span>
 #include <vector>
@@ -82,6 +83,8 @@ struct ContactQuery {
 // over them as batched passes (BallClearance), the solve only on those left in doubt.
 class ContactPredictor {
  public:
+  explicit ContactPredictor(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : mem_(mem) {}
   // One prediction per index in `which`, in order; valid until the next call. `screen`, when not
   // empty, says per index whether the cheap rejection is worth trying first: not for a fragment
   // that was a candidate a step ago and almost surely still is (the answer is the same either way).
@@ -93,16 +96,17 @@ class ContactPredictor {
   void reserve(std::size_t n);
 
  private:
-  BallClearance clearance_;
-  std::vector<int> screened_;  // positions in `which` that go through the rejection
+  std::pmr::memory_resource* mem_;
+  BallClearance clearance_{mem_};
+  std::pmr::vector<int> screened_{mem_};  // positions in `which` that go through the rejection
   // Of the screened fragments: the path's velocity and height, the radius, t_G.
-  std::vector<double> vy_, py_, radius_, t_horizon_;
+  std::pmr::vector<double> vy_{mem_}, py_{mem_}, radius_{mem_}, t_horizon_{mem_};
   // The quartics left to solve, their horizons and the positions in `which` they answer for.
-  std::vector<Quartic> quartics_;
-  std::vector<double> quartic_horizons_s_;
-  std::vector<int> quartic_of_;
-  FirstNonpositiveBatch roots_;
-  std::vector<ContactPrediction> out_;
+  std::pmr::vector<Quartic> quartics_{mem_};
+  std::pmr::vector<double> quartic_horizons_s_{mem_};
+  std::pmr::vector<int> quartic_of_{mem_};
+  FirstNonpositiveBatch roots_{mem_};
+  std::pmr::vector<ContactPrediction> out_{mem_};
 };
 
 // Where a path relative to the camera (moving at camera_velocity) first reaches the near plane,

@@ -32,6 +32,7 @@
 // reachable's region: it still holds, since reachable does not depend on A at all.
 
 #include <array>
+#include <memory_resource>
 #include <span>
 #include <tuple>
 #include <utility>
@@ -46,8 +47,11 @@ namespace fragsim {
 
 class EdgeMinStrategy final : public Strategy {
  public:
-  explicit EdgeMinStrategy(const EdgeMinParams& params)
+  // Its state and work space are allocated from `mem` (the controller library's allocator hook).
+  explicit EdgeMinStrategy(const EdgeMinParams& params,
+                           std::pmr::memory_resource* mem = std::pmr::get_default_resource())
       : params_(params),
+        mem_(mem),
         // The ways out in the solver's order (+up, -up, +right, -right) from top bottom left right.
         way_weights_{params.edge_weights[0], params.edge_weights[1], params.edge_weights[3],
                      params.edge_weights[2]},
@@ -84,20 +88,22 @@ class EdgeMinStrategy final : public Strategy {
 
  private:
   EdgeMinParams params_;
+  std::pmr::memory_resource* mem_;
   std::array<double, 4> way_weights_;
   bool weighted_;
-  OcclusionBound cover_;
+  OcclusionBound cover_{mem_};
   // Work space kept between steps; holds no state of the run (the largest radius of the last
   // step is a hint for the rejection's window: it decides how fast a step is, not its answer).
-  TwoBoxClearance clearance_;
+  TwoBoxClearance clearance_{mem_};
   double r_max_hint_m_ = -1.0;  // none yet
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
-  std::vector<Eigen::Vector3d> last_force_N_;
-  std::vector<Eigen::Vector3d> carried_from_;        // last_force_N_ before the last carry_over
-  bool carried_over_ = false;                        // ... which did swap the two
-  std::vector<std::tuple<int, double, int>> queue_;  // (tier, arrival, fragment)
-  std::vector<char> deferred_;
+  std::pmr::vector<Eigen::Vector3d> last_force_N_{mem_};
+  std::pmr::vector<Eigen::Vector3d> carried_from_{
+      mem_};                   // last_force_N_ before the last carry_over
+  bool carried_over_ = false;  // ... which did swap the two
+  std::pmr::vector<std::tuple<int, double, int>> queue_{mem_};  // (tier, arrival, fragment)
+  std::pmr::vector<char> deferred_{mem_};
 };
 
 }  // namespace fragsim

@@ -25,7 +25,8 @@ void EdgeStrategy::reserve(int fragment_count) {
 
 void EdgeStrategy::carry_over(std::span<const int> previous) {
   // Each into its spare array, which then keeps the state before the call for undo_carry_over.
-  auto remap = [&previous](std::vector<char>& state, std::vector<char>& spare, char fresh) {
+  auto remap = [&previous](std::pmr::vector<char>& state, std::pmr::vector<char>& spare,
+                           char fresh) {
     spare.assign(previous.size(), fresh);
     for (std::size_t i = 0; i < previous.size(); ++i) {
       const int j = previous[i];

@@ -5,6 +5,7 @@
 // near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
 // candidate.
 
+#include <memory_resource>
 #include <span>
 #include <vector>
 
@@ -16,7 +17,10 @@ namespace fragsim {
 
 class EdgeStrategy final : public Strategy {
  public:
-  explicit EdgeStrategy(const EdgeParams& params) : params_(params) {}
+  // Its state and work space are allocated from `mem` (the controller library's allocator hook).
+  explicit EdgeStrategy(const EdgeParams& params,
+                        std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : params_(params), mem_(mem) {}
   std::string name() const override { return "edge"; }
   Predictor path_predictor() const override { return params_.predictor; }
   void reset(int fragment_count) override;
@@ -37,15 +41,16 @@ class EdgeStrategy final : public Strategy {
   bool should_examine(const StepContext& ctx, std::size_t i) const;
 
   EdgeParams params_;
-  std::vector<char> candidate_;  // examined again next step
-  std::vector<char> pushed_;     // got a force in the last step
-  std::vector<char> predicted_;  // was a candidate by the last prediction (not just by reset)
+  std::pmr::memory_resource* mem_;
+  std::pmr::vector<char> candidate_{mem_};  // examined again next step
+  std::pmr::vector<char> pushed_{mem_};     // got a force in the last step
+  std::pmr::vector<char> predicted_{mem_};  // was a candidate by the last prediction (not reset's)
   // The three above as they were before the last carry_over.
-  std::vector<char> candidate_before_, pushed_before_, predicted_before_;
+  std::pmr::vector<char> candidate_before_{mem_}, pushed_before_{mem_}, predicted_before_{mem_};
   // Work space, kept between steps to save allocations; holds no state of the run.
-  std::vector<int> examined_;
-  std::vector<char> screen_;
-  ContactPredictor predictor_;
+  std::pmr::vector<int> examined_{mem_};
+  std::pmr::vector<char> screen_{mem_};
+  ContactPredictor predictor_{mem_};
 };
 
 }  // namespace fragsim

@@ -86,7 +86,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   // again on every later step, so the plan is kept rather than lost between samples.
   const long long last_step =
       std::max(1LL, static_cast<long long>(std::llround(params.cover_horizon_s / dt)));
-  std::vector<long long> steps;
+  std::pmr::vector<long long> steps(mem_);
   const long long dense = 2LL * params.cover_samples;
   const long long now = std::max(0, ctx.step);
   // Band by band (stride 1 for d < dense, then stride s for dense s / 2 <= d < dense s), only
@@ -116,7 +116,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   const double near_m = cam.near_m;
 
   // The push already given this step (edge-min's, against the camera): part of the path.
-  std::vector<int> slot(n, -1);
+  std::pmr::vector<int> slot(n, -1, mem_);
   for (std::size_t k = 0; k < out.forces.size(); ++k) {
     const int i = out.forces[k].fragment;
     if (i >= 0 && static_cast<std::size_t>(i) < n)
@@ -163,7 +163,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
     if (added_mps_[i].norm() < 1e-9) added_mps_[i].setZero();
   }
 
-  std::vector<Path> paths(n);
+  std::pmr::vector<Path> paths(n, mem_);
   const auto disc_at = [&](const Eigen::Vector3d& p, double rho) {
     Disc d;
     if (!(p.z() + rho > near_m)) return d;  // wholly behind the near plane: nothing drawn
@@ -262,7 +262,8 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   // fragment is out, and a plan handed from fragment to fragment every step moves many a little
   // and clears none), then by cells covered per push.
   if (pushed_last_.size() != n) pushed_last_.assign(n, 0);
-  std::vector<std::tuple<int, double, int>> order;  // (not pushed last, -score, fragment): total
+  std::pmr::vector<std::tuple<int, double, int>> order(
+      mem_);  // (not pushed last, -score, fragment): total
   for (std::size_t i = 0; i < n; ++i) {
     int most = 0;
     for (int j = 0; j < k_samples; ++j) {

@@ -5,6 +5,7 @@
 // reproducible.
 
 #include <limits>
+#include <memory_resource>
 #include <optional>
 #include <span>
 #include <string>
@@ -48,11 +49,16 @@ struct StepContext {
 
 // What a strategy did in a step besides its effects, for the report (RunSummary's strategy
 // activity) and the C API's stats: nothing here changes the world.
+//
+// The containers here and in the strategies are std::pmr ones: the tool runs them on the default
+// resource (operator new), the controller library on the game's allocator hook.
 struct StepActivity {
-  std::vector<int> candidates;  // fragments the strategy considers threatening (edge)
-  std::vector<int> capped;      // fragments whose force the acceleration cap reduced
-  int guarded = 0;              // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
-  int deferred = 0;             // fragments a per-step budget left unsolved (edge-min)
+  explicit StepActivity(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : candidates(mem), capped(mem) {}
+  std::pmr::vector<int> candidates;  // fragments the strategy considers threatening (edge)
+  std::pmr::vector<int> capped;      // fragments whose force the acceleration cap reduced
+  int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
+  int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
   // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
   int rejected_cheaply = 0;
 
@@ -72,11 +78,13 @@ struct StepActivity {
 // A strategy's answer for one step: an effect for each part of the run that applies one (the
 // physics, the camera, the drawing), and its activity for the report.
 struct StepOutput {
-  std::vector<AppliedForce> forces;  // the physics: at most one entry per fragment
-  std::optional<double> near_m;      // the camera: a near distance other than the scene's
+  explicit StepOutput(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+      : forces(mem), opacity(mem), activity(mem) {}
+  std::pmr::vector<AppliedForce> forces;  // the physics: at most one entry per fragment
+  std::optional<double> near_m;           // the camera: a near distance other than the scene's
   // The drawing: each fragment's opacity in the frame after this step, 0 (invisible) to 1 (fade);
   // empty: every fragment opaque, as for every strategy that draws fragments as they are.
-  std::vector<float> opacity;
+  std::pmr::vector<float> opacity;
   StepActivity activity;
 
   // Room for one force per fragment: a step within it does not allocate.

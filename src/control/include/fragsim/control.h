@@ -14,9 +14,13 @@
  *   fragsim_controller_step, apply the forces (the rules for engines: "Applying the forces")
  *   fragsim_controller_destroy(ctl);
  *
- * DOUBLES. Every number this header passes is a double (fragsim_vec3 is three doubles). A float
- * array handed where a double is expected is read as garbage (tiny numbers such as 1.6e-314) and
- * nothing checks it: convert floats first.
+ * DOUBLES, or floats where said. Every number this header passes is a double (fragsim_vec3 is
+ * three doubles), except the strided arrays of fragsim_controller_step_arrays, which since 0.6 may
+ * be floats (fragsim_fragment_arrays.scalar_type). A float array handed where doubles are expected
+ * is read as garbage (tiny numbers such as 1.6e-314) and nothing can check it: say FLOAT.
+ *
+ * ANY UP AXIS (since 0.6). The ground is the plane dot(ground_normal, p) = ground_height_m and
+ * gravity any vector: a Z-up engine passes ground_normal (0, 0, 1) and its own coordinates.
  *
  * Threads: the library creates none. Its one global is the table of controller slots behind the
  * ids (created and destroyed under a lock). One controller must be used by one thread at a time
@@ -32,7 +36,7 @@
  * Special values, each with one meaning wherever it appears:
  *   FRAGSIM_UNDECLARED (-1)  a camera bound the game does not declare: the def's assumption applies
  *   INFINITY                 no bound at all (camera bounds), no end (end_time_s)
- *   -INFINITY                no ground (ground_height_m)
+ *   -INFINITY                no ground (ground_height_m, whatever ground_normal)
  *   0                        zero, as a number: a camera whose max_speed_mps is 0 cannot move, one
  *                            whose max_turn_radps is 0 cannot turn; a fragment of mass 0 cannot be
  *                            pushed (it is examined, gets no force, and stats.unprotected counts it
@@ -62,9 +66,9 @@
 #include <stdint.h>
 
 /* Before 1.0 a minor version may change the structs, so the shared library is named for it
- * (libfragsim_control.so.0.5): a program built against another minor is not loaded with it. */
+ * (libfragsim_control.so.0.6): a program built against another minor is not loaded with it. */
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 5
+#define FRAGSIM_CONTROL_VERSION_MINOR 6
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -222,6 +226,16 @@ typedef struct fragsim_deflect_all_def {
   double range_m;
 } fragsim_deflect_all_def;
 
+/* Since 0.6. The controller's allocator (fragsim_controller_def.alloc_fn, free_fn): every
+ * allocation a controller makes (the controller itself, its per-id tables, its work arrays, its
+ * strategy's state) is alloc_fn(size, alignment, alloc_user), freed by free_fn(pointer, size,
+ * alignment, alloc_user) with the same size and alignment. alignment is a power of two, at most
+ * alignof(max_align_t) in practice. alloc_fn returns NULL when it cannot: the call then returns
+ * FRAGSIM_ERROR_OUT_OF_MEMORY with the controller as before it. Called only from within the
+ * controller's own calls (create, reserve, step, reset, destroy), on the calling thread. */
+typedef void* (*fragsim_alloc_fn)(size_t size, size_t alignment, void* user);
+typedef void (*fragsim_free_fn)(void* pointer, size_t size, size_t alignment, void* user);
+
 /* Settings of one controller. Must be initialised with fragsim_default_controller_def(), then
  * changed field by field; fragsim_controller_create refuses a def that was not. Each number must
  * keep the range of fragsim's scene key of the same meaning (docs/guide.md, scene keys: edge-min.*,
@@ -240,6 +254,16 @@ typedef struct fragsim_controller_def {
    * pushed more gently, more paths examined, and more pushes that a later camera move makes
    * needless. Default 3: a thrown fragment at 10 m/s covers 30 m. */
   double horizon_cap_s;
+  /* Since 0.6. The game's allocator (fragsim_alloc_fn above): both NULL (the default) for the C++
+   * runtime's operator new and delete; one without the other is refused
+   * (FRAGSIM_ERROR_INVALID_ARGUMENT). alloc_user (default NULL) is passed to both as it is. The
+   * one allocation it cannot take: the process-wide table of controller ids grows by a chunk of
+   * 256 slots through operator new when the 1st, 257th, ... controller alive at once is created
+   * (never freed); and the first fragsim_controller_create of a process builds the tables of the
+   * parameters' rules (once, through operator new). */
+  fragsim_alloc_fn alloc_fn;
+  fragsim_free_fn free_fn;
+  void* alloc_user;
   /* Private: set by fragsim_default_controller_def; do not touch. */
   int32_t internal_value;
 } fragsim_controller_def;
@@ -259,7 +283,9 @@ typedef struct fragsim_camera {
   double aspect;            /* width over height, > 0 */
   double near_m;            /* near clip distance, > 0 */
   double far_m;             /* far clip distance, > near_m */
-  fragsim_vec3 body_half_m; /* half size of the camera's body, a box centred on the eye; >= 0 */
+  /* Half size of the camera's body, a box centred on the eye, along right, up and forward (the
+   * camera's own axes, so it does not depend on the world's up axis); >= 0. */
+  fragsim_vec3 body_half_m;
   /* V_c: the fastest the player can move the camera; >= 0 (0: a camera that cannot move). A
    * camera moving faster than it declares breaks the promise the robust models keep:
    * stats.warnings gets FRAGSIM_WARNING_CAMERA_OVER_SPEED. */
@@ -306,34 +332,67 @@ typedef struct fragsim_step_input {
    * nothing. */
   double end_time_s;
   double dt_s;               /* the coming physics step, > 0; default 1/60 */
-  fragsim_vec3 gravity_mps2; /* default (0, -9.81, 0) */
-  /* Height of the ground plane (y up); -INFINITY (the default): no ground, so every path is
-   * examined to the def's horizon_cap_s (safe, more work). */
+  fragsim_vec3 gravity_mps2; /* default (0, -9.81, 0); any direction (since 0.6) */
+  /* The ground plane: the points p with dot(ground_normal, p) = ground_height_m, its offset along
+   * ground_normal (before 0.6: the height y of a y-up ground, which the default normal keeps).
+   * -INFINITY (the default): no ground, so every path is examined to the def's horizon_cap_s
+   * (safe, more work). Fragments fly on the side the normal points to. */
   double ground_height_m;
+  /* Since 0.6. The ground's unit normal, pointing up, in world coordinates: (0, 1, 0) by default
+   * (y up), (0, 0, 1) for a z-up engine (Unreal, Blender), any unit vector for a sloped ground.
+   * Finite, of length 1 within 1e-6 (it is normalised); a zero normal (a zero-initialised input)
+   * is refused, FRAGSIM_ERROR_INVALID_ARGUMENT. The controller works in a frame where the normal
+   * is +y: for a normal along a coordinate axis (+-x, +-y, +-z) the change of frame is a signed
+   * permutation of the coordinates and rounds nothing (the forces are those of the same scene
+   * given y-up, rotated, to the bit); any other normal costs a rotation's rounding (about 1e-15
+   * relative). The controller keeps state per fragment between steps in that frame: a step whose
+   * normal differs (bit for bit) from the last successful step's forgets every fragment, as
+   * fragsim_controller_reset does (stats.new_ids counts them all). */
+  fragsim_vec3 ground_normal;
   fragsim_camera camera;
   const fragsim_fragment* fragments; /* may be NULL when fragment_count is 0 */
   int32_t fragment_count;            /* >= 0 */
 } fragsim_step_input;
 
+/* Since 0.6. The type of the numbers in fragsim_fragment_arrays. */
+typedef enum fragsim_scalar_type {
+  FRAGSIM_SCALAR_DOUBLE = 0, /* double (the default, and what a zeroed struct says) */
+  FRAGSIM_SCALAR_FLOAT = 1   /* float: read, converted to double exactly, forces rounded back */
+} fragsim_scalar_type;
+
 /* The same fragments as strided arrays the engine already has: element i of an array is at byte
- * offset i * stride from its start. position_m, velocity_mps: 3 DOUBLES each (not floats);
- * radius_m, mass_kg: one double; id: one uint64_t; touched: one uint8_t, or NULL for "no
- * contacts" (what the default edge-min needs). force_N, the output: 3 doubles per fragment. */
+ * offset i * stride from its start (no alignment needed). With scalar_type DOUBLE: position_m,
+ * velocity_mps 3 doubles each, radius_m, mass_kg one double, force_N (the output) 3 doubles per
+ * fragment; with FLOAT, floats in each of these places. id: one uint64_t; touched: one uint8_t,
+ * or NULL for "no contacts" (what the default edge-min needs). Each stride is at least its
+ * element's size (24 bytes for 3 doubles, 12 for 3 floats, 8 for a double or an id, 4 for a
+ * float, 1 for touched); with count > 1 a smaller one (0 included) is refused,
+ * FRAGSIM_ERROR_INVALID_ARGUMENT, and a refused call writes zeros to force_N only when its
+ * scalar_type and (count > 1) force stride are valid: otherwise its layout is unknown.
+ *
+ * The number arrays are void pointers (since 0.6; const double* and double* before): one field
+ * takes a double* or a float* without a cast in C and C++, where a union or a second set of
+ * fields would make every caller name the type twice, and scalar_type says which it is. A float
+ * input is converted to double exactly, the controller computes in double as for doubles, and
+ * each force is the double force rounded to the nearest float: no second code path. */
 typedef struct fragsim_fragment_arrays {
-  const double* position_m;
+  const void* position_m;
   size_t position_stride_bytes;
-  const double* velocity_mps;
+  const void* velocity_mps;
   size_t velocity_stride_bytes;
-  const double* radius_m;
+  const void* radius_m;
   size_t radius_stride_bytes;
-  const double* mass_kg;
+  const void* mass_kg;
   size_t mass_stride_bytes;
   const uint64_t* id;
   size_t id_stride_bytes;
   const uint8_t* touched;
   size_t touched_stride_bytes;
-  double* force_N;
+  void* force_N;
   size_t force_stride_bytes;
+  /* Since 0.6: a fragsim_scalar_type, FRAGSIM_SCALAR_DOUBLE (0) by default. Any other value is
+   * refused, FRAGSIM_ERROR_INVALID_ARGUMENT naming arrays.scalar_type. */
+  fragsim_scalar_type scalar_type;
 } fragsim_fragment_arrays;
 
 /* Bits of fragsim_step_stats.warnings: input that is legal but looks like a mistake. In builds
@@ -379,7 +438,8 @@ FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void);
 FRAGSIM_API fragsim_camera fragsim_default_camera(void);
 
 /* Since 0.5. A step input to start from: time 0, no end (INFINITY), dt 1/60 s, gravity
- * (0, -9.81, 0), no ground (-INFINITY), fragsim_default_camera(), no fragments. */
+ * (0, -9.81, 0), no ground (-INFINITY), ground normal (0, 1, 0) (since 0.6),
+ * fragsim_default_camera(), no fragments. */
 FRAGSIM_API fragsim_step_input fragsim_default_step_input(void);
 
 /* True for the all-zero id (no controller); says nothing of whether a nonzero id is alive. */
@@ -401,7 +461,8 @@ FRAGSIM_API fragsim_status fragsim_controller_destroy(fragsim_controller_id cont
 /* Nonzero while the id names a live controller. */
 FRAGSIM_API int fragsim_controller_is_valid(fragsim_controller_id controller);
 
-/* Forgets every fragment: the next step treats all ids as new. Keeps the capacity reserved. */
+/* Forgets every fragment: the next step treats all ids as new. Keeps the capacity reserved;
+ * allocates nothing. */
 FRAGSIM_API fragsim_status fragsim_controller_reset(fragsim_controller_id controller);
 
 /* Since 0.5. Makes room for fragment_count fragments now (in [0, FRAGSIM_MAX_FRAGMENTS]), so the
@@ -429,7 +490,8 @@ FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller_id control
                                                    fragsim_step_stats* stats);
 
 /* The same with the fragments as strided arrays (input->fragments is ignored, and count is
- * used instead of input->fragment_count); forces go to arrays->force_N. */
+ * used instead of input->fragment_count); forces go to arrays->force_N, as doubles or (since 0.6)
+ * floats (arrays->scalar_type). */
 FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id controller,
                                                           const fragsim_step_input* input,
                                                           const fragsim_fragment_arrays* arrays,
