@@ -18,17 +18,18 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// One fragment as the library reads it, converted from Bullet's floats: the 0.5 API takes
-// doubles only (a float array would be read as garbage), so the example keeps this copy and
-// hands it over as strided arrays.
-struct FragmentDoubles {
-  double position_m[3];
-  double velocity_mps[3];
-  double radius_m;
-  double mass_kg;
+// One fragment as the library reads it, in Bullet's own floats (btScalar; the arrays say
+// FRAGSIM_SCALAR_FLOAT). Bullet keeps each body in its own object, not in arrays, so the example
+// gathers them into this record and hands the records over as strided arrays.
+struct FragmentRecord {
+  btScalar position_m[3];
+  btScalar velocity_mps[3];
+  btScalar radius_m;
+  btScalar mass_kg;
   uint64_t id;
-  double force_N[3];
+  btScalar force_N[3];
 };
+static_assert(sizeof(btScalar) == sizeof(float), "Debian's Bullet is built in floats");
 
 fragsim_vec3 to_fragsim(Vec3 v) {
   return {v.x, v.y, v.z};
@@ -41,7 +42,7 @@ struct Substeps {
   fragsim_controller_id controller{};  // null id: no controller
   fragsim_step_input input = fragsim_default_step_input();
   fragsim_fragment_arrays arrays{};
-  std::vector<FragmentDoubles> fragments;
+  std::vector<FragmentRecord> fragments;
   std::vector<Vec3> centre_before_m;  // for the near-plane check
   std::vector<char> hit, pushed;
   NearRectangle near_rectangle;
@@ -65,7 +66,7 @@ void before_substep(btDynamicsWorld* world, btScalar substep_s) {
     const btRigidBody& body = s.physics->fragment(i);
     const btVector3& p = body.getCenterOfMassPosition();
     const btVector3& v = body.getLinearVelocity();
-    FragmentDoubles& f = s.fragments[i];
+    FragmentRecord& f = s.fragments[i];
     f.position_m[0] = p.x(), f.position_m[1] = p.y(), f.position_m[2] = p.z();
     f.velocity_mps[0] = v.x(), f.velocity_mps[1] = v.y(), f.velocity_mps[2] = v.z();
     s.centre_before_m[i] = {f.position_m[0], f.position_m[1], f.position_m[2]};
@@ -93,7 +94,7 @@ void before_substep(btDynamicsWorld* world, btScalar substep_s) {
       s.result->capped += stats.capped;
       s.result->warnings |= stats.warnings;
       for (int i = 0; i < n; ++i) {
-        const double* force = s.fragments[i].force_N;
+        const btScalar* force = s.fragments[i].force_N;
         if (force[0] == 0 && force[1] == 0 && force[2] == 0) continue;
         btRigidBody& body = s.physics->fragment(i);
         // For this one substep only. stepSimulation clears forces once, after all the frame's
@@ -102,9 +103,7 @@ void before_substep(btDynamicsWorld* world, btScalar substep_s) {
         // gravity Bullet adds once per frame (the frame's later substeps would fall without it).
         // An impulse F dt_s changes the velocity now, before Bullet's semi-implicit Euler adds
         // g dt_s and moves the body by its new velocity: exactly the force F held for one substep.
-        body.applyCentralImpulse(btVector3(static_cast<btScalar>(force[0] * dt_s),
-                                           static_cast<btScalar>(force[1] * dt_s),
-                                           static_cast<btScalar>(force[2] * dt_s)));
+        body.applyCentralImpulse(btVector3(force[0], force[1], force[2]) * substep_s);
         body.activate(true);  // Bullet does not integrate a sleeping body
         s.pushed[i] = 1;
       }
@@ -148,10 +147,11 @@ void set_fixed_input(fragsim_step_input& in, const btVector3& gravity) {
   in.camera.max_turn_radps = CameraBounds::max_turn_radps;
 }
 
-fragsim_fragment_arrays strided_arrays(std::vector<FragmentDoubles>& fragments) {
-  constexpr size_t stride = sizeof(FragmentDoubles);
-  FragmentDoubles& f = fragments.front();
+fragsim_fragment_arrays strided_arrays(std::vector<FragmentRecord>& fragments) {
+  constexpr size_t stride = sizeof(FragmentRecord);
+  FragmentRecord& f = fragments.front();
   fragsim_fragment_arrays arrays{};
+  arrays.scalar_type = FRAGSIM_SCALAR_FLOAT;
   arrays.position_m = f.position_m, arrays.position_stride_bytes = stride;
   arrays.velocity_mps = f.velocity_mps, arrays.velocity_stride_bytes = stride;
   arrays.radius_m = &f.radius_m, arrays.radius_stride_bytes = stride;
@@ -183,8 +183,12 @@ RunResult run_blast(const RunSettings& settings) {
   s.hit.assign(n, 0);
   s.pushed.assign(n, 0);
   for (int i = 0; i < n; ++i) {
-    s.fragments[i].radius_m = physics.bounding_radius_m(i);
-    s.fragments[i].mass_kg = physics.mass_kg(i);
+    // Rounded up, not to nearest: a bounding radius must not shrink.
+    const double radius_m = physics.bounding_radius_m(i);
+    btScalar radius_float = static_cast<btScalar>(radius_m);
+    if (radius_float < radius_m) radius_float = std::nextafter(radius_float, 1.0f);
+    s.fragments[i].radius_m = radius_float;
+    s.fragments[i].mass_kg = static_cast<btScalar>(physics.mass_kg(i));
     s.fragments[i].id = static_cast<uint64_t>(i);  // stable: Bullet's bodies never change order
   }
   s.arrays = strided_arrays(s.fragments);

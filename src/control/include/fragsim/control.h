@@ -45,9 +45,10 @@
  * Applying the forces, in an engine with a fixed physics substep (Bullet, PhysX, Jolt, ODE):
  *   1. Call fragsim_controller_step once per physics substep, before the substep, with that
  *      substep's dt_s and the state the last substep left (not once per rendered frame).
- *   2. Apply each force for that one substep only: as a force the engine clears after the substep
- *      (Bullet: applyCentralForce, then clearForces after stepSimulation's internal step, or
- *      simply an impulse F dt_s with applyCentralImpulse), never a force that persists.
+ *   2. Apply each force for that one substep only, never as a force that persists: in Bullet an
+ *      impulse F dt_s (applyCentralImpulse) from the pre-tick callback. (Bullet clears forces
+ *      only after all of a frame's substeps, and clearing them after each one also drops the
+ *      gravity it adds once per frame.)
  *   3. Wake a sleeping body you push (Bullet: activate(true)); the controller pushes only what
  *      moves, but a pushed body must integrate.
  *   4. Pass the camera as the physics sees it at the start of the substep: its pose interpolated
