@@ -182,14 +182,11 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
     for (int i = 0; i < n; ++i) {
       unsigned char* r = c.buffer.data() + c.stride * static_cast<std::size_t>(i);
       const fragsim_fragment& f = c.fragments[static_cast<std::size_t>(i)];
-      const float numbers[8] = {static_cast<float>(f.position_m.x),
-                                static_cast<float>(f.position_m.y),
-                                static_cast<float>(f.position_m.z),
-                                static_cast<float>(f.velocity_mps.x),
-                                static_cast<float>(f.velocity_mps.y),
-                                static_cast<float>(f.velocity_mps.z),
-                                static_cast<float>(f.radius_m),
-                                static_cast<float>(f.mass_kg)};
+      const float numbers[8] = {
+          static_cast<float>(f.position_m.x),   static_cast<float>(f.position_m.y),
+          static_cast<float>(f.position_m.z),   static_cast<float>(f.velocity_mps.x),
+          static_cast<float>(f.velocity_mps.y), static_cast<float>(f.velocity_mps.z),
+          static_cast<float>(f.radius_m),       static_cast<float>(f.mass_kg)};
       std::memcpy(r, numbers, sizeof numbers);
       std::memcpy(r + 32, &f.id, sizeof(std::uint64_t));
       std::memcpy(r + 40, &f.touched, 1);

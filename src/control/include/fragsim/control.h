@@ -281,9 +281,9 @@ typedef struct fragsim_camera {
   /* Vertical field of view in DEGREES, in (0, 180); below 5 it is likely radians and sets
    * FRAGSIM_WARNING_FOVY_IN_RADIANS. */
   double fovy_deg;
-  double aspect;            /* width over height, > 0 */
-  double near_m;            /* near clip distance, > 0 */
-  double far_m;             /* far clip distance, > near_m */
+  double aspect; /* width over height, > 0 */
+  double near_m; /* near clip distance, > 0 */
+  double far_m;  /* far clip distance, > near_m */
   /* Half size of the camera's body, a box centred on the eye, along right, up and forward (the
    * camera's own axes, so it does not depend on the world's up axis); >= 0. */
   fragsim_vec3 body_half_m;
