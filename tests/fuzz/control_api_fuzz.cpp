@@ -25,6 +25,7 @@
 #include <new>
 #include <vector>
 
+#include "../control/api/replaced_operator_new.hpp"
 #include "fragsim/control.h"
 
 namespace {
@@ -32,54 +33,11 @@ namespace {
 long g_allocations = 0;
 long g_fail_at = 0;  // 0: none
 
-void* allocate(std::size_t n) {
-  if (g_fail_at != 0 && ++g_allocations == g_fail_at) throw std::bad_alloc();
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-
 }  // namespace
 
-void* operator new(std::size_t n) {
-  return allocate(n);
-}
-void* operator new[](std::size_t n) {
-  return allocate(n);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-// The nothrow forms too: every form that the deletes above may free must come from malloc.
-// libFuzzer itself allocates with new (std::nothrow) and frees with delete[]; left to the
-// sanitizer's own nothrow new, that pair is an alloc-dealloc mismatch.
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return allocate(n);
-  } catch (const std::bad_alloc&) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t n, const std::nothrow_t&) noexcept {
-  try {
-    return allocate(n);
-  } catch (const std::bad_alloc&) {
-    return nullptr;
-  }
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-  std::free(p);
+void* test_allocate(std::size_t n, std::size_t alignment) {
+  if (g_fail_at != 0 && ++g_allocations == g_fail_at) throw std::bad_alloc();
+  return test_system_block(n, alignment);
 }
 
 namespace {

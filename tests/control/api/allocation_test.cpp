@@ -18,37 +18,19 @@
 #include <new>
 #include <vector>
 
+#include "replaced_operator_new.hpp"
+
 namespace {
 
 long g_allocations = 0;  // counted while g_counting
 bool g_counting = false;
 long g_fail_at = 0;  // 0: none; else the allocation (1-based, while counting) that fails
 
-void* allocate(std::size_t n) {
-  if (g_counting && ++g_allocations == g_fail_at) throw std::bad_alloc();
-  if (void* p = std::malloc(n == 0 ? 1 : n)) return p;
-  throw std::bad_alloc();
-}
-
 }  // namespace
 
-void* operator new(std::size_t n) {
-  return allocate(n);
-}
-void* operator new[](std::size_t n) {
-  return allocate(n);
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
+void* test_allocate(std::size_t n, std::size_t alignment) {
+  if (g_counting && ++g_allocations == g_fail_at) throw std::bad_alloc();
+  return test_system_block(n, alignment);
 }
 
 namespace {

@@ -24,57 +24,18 @@
 #include <new>
 #include <vector>
 
+#include "replaced_operator_new.hpp"
+
 namespace {
 
 long g_global_news = 0;  // operator new calls while g_watch
 bool g_watch = false;
 
-void* global_allocate(std::size_t n, std::size_t align) {
-  if (g_watch) ++g_global_news;
-  void* p = align <= alignof(std::max_align_t)
-                ? std::malloc(n == 0 ? 1 : n)
-                : std::aligned_alloc(align, (n + align - 1) / align * align);
-  if (p == nullptr) throw std::bad_alloc();
-  return p;
-}
-
 }  // namespace
 
-void* operator new(std::size_t n) {
-  return global_allocate(n, 0);
-}
-void* operator new[](std::size_t n) {
-  return global_allocate(n, 0);
-}
-void* operator new(std::size_t n, std::align_val_t a) {
-  return global_allocate(n, static_cast<std::size_t>(a));
-}
-void* operator new[](std::size_t n, std::align_val_t a) {
-  return global_allocate(n, static_cast<std::size_t>(a));
-}
-void operator delete(void* p) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
-}
-void operator delete[](void* p, std::size_t, std::align_val_t) noexcept {
-  std::free(p);
+void* test_allocate(std::size_t n, std::size_t align) {
+  if (g_watch) ++g_global_news;
+  return test_system_block(n, align);
 }
 
 namespace {
