@@ -18,6 +18,7 @@
 #include <new>
 #include <vector>
 
+#include "check.h"
 #include "replaced_operator_new.hpp"
 
 namespace {
@@ -34,15 +35,6 @@ void* test_allocate(std::size_t n, std::size_t alignment) {
 }
 
 namespace {
-
-int g_failures = 0;
-#define CHECK(cond)                                                                 \
-  do {                                                                              \
-    if (!(cond)) {                                                                  \
-      std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++g_failures;                                                                 \
-    }                                                                               \
-  } while (0)
 
 constexpr double kDt = 1.0 / 60.0;
 constexpr int kSteps = 10;
@@ -222,7 +214,7 @@ void check_config(const Config& cfg, const Scenario& s) {
         if (!same(f, reference[static_cast<std::size_t>(j)])) {
           std::fprintf(stderr, "%s: allocation %ld of step %d failed: step %d differs\n", cfg.name,
                        n, k, j);
-          ++g_failures;
+          ++failures;
         }
       }
       fragsim_controller_destroy(c);
@@ -250,10 +242,5 @@ void check_config(const Config& cfg, const Scenario& s) {
 int main() {
   const Scenario s = make_scenario();
   for (const Config& cfg : configs()) check_config(cfg, s);
-  if (g_failures != 0) {
-    std::fprintf(stderr, "allocation_test: %d checks failed\n", g_failures);
-    return 1;
-  }
-  std::printf("allocation_test: all checks passed\n");
-  return 0;
+  return check_verdict("allocation_test");
 }

@@ -24,6 +24,7 @@
 #include <new>
 #include <vector>
 
+#include "check.h"
 #include "replaced_operator_new.hpp"
 
 namespace {
@@ -39,15 +40,6 @@ void* test_allocate(std::size_t n, std::size_t align) {
 }
 
 namespace {
-
-int g_failures = 0;
-#define CHECK(cond)                                                                 \
-  do {                                                                              \
-    if (!(cond)) {                                                                  \
-      std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++g_failures;                                                                 \
-    }                                                                               \
-  } while (0)
 
 // The game's allocator: malloc with a header before each block that records the size and
 // alignment asked, checked when the block comes back. Counts its calls and the blocks out, and
@@ -304,7 +296,7 @@ void check_config(const Config& cfg, const Scene& s) {
         if (cfg.def.edge_min.cover_max >= 1.0 && !same(f, reference[static_cast<std::size_t>(j)])) {
           std::fprintf(stderr, "%s: hook call %ld of step %d failed: step %d differs\n", cfg.name,
                        n, k, j);
-          ++g_failures;
+          ++failures;
         }
       }
       fragsim_controller_destroy(c);
@@ -355,10 +347,5 @@ int main() {
   half_a_hook_is_refused();
   const Scene s;
   for (const Config& cfg : configs()) check_config(cfg, s);
-  if (g_failures != 0) {
-    std::fprintf(stderr, "allocator_hook_test: %d checks failed\n", g_failures);
-    return 1;
-  }
-  std::printf("allocator_hook_test: all checks passed\n");
-  return 0;
+  return check_verdict("allocator_hook_test");
 }

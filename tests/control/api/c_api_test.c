@@ -6,14 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int failures = 0;
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    if (!(cond)) {                                                             \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++failures;                                                              \
-    }                                                                          \
-  } while (0)
+#include "check.h"
 
 static int contains(const char* text, const char* part) {
   return strstr(text, part) != NULL;
@@ -286,10 +279,5 @@ int main(void) {
   likely_unit_mistakes_are_flagged();
   counts_and_reserve();
   touched_may_be_null();
-  if (failures != 0) {
-    fprintf(stderr, "c_api_test: %d checks failed\n", failures);
-    return 1;
-  }
-  printf("c_api_test: all checks passed\n");
-  return 0;
+  return check_verdict("c_api_test");
 }

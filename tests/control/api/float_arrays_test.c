@@ -8,14 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int failures = 0;
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    if (!(cond)) {                                                             \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++failures;                                                              \
-    }                                                                          \
-  } while (0)
+#include "check.h"
 
 enum { kCount = 240 };
 
@@ -316,10 +309,5 @@ int main(void) {
   exact_inputs_give_rounded_double_forces();
   rounded_blast_stays_within_tolerance();
   refusals_and_skips();
-  if (failures != 0) {
-    fprintf(stderr, "float_arrays_test: %d checks failed\n", failures);
-    return 1;
-  }
-  printf("float_arrays_test: all checks passed\n");
-  return 0;
+  return check_verdict("float_arrays_test");
 }

@@ -7,14 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int failures = 0;
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    if (!(cond)) {                                                             \
-      fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++failures;                                                              \
-    }                                                                          \
-  } while (0)
+#include "check.h"
 
 enum { kCount = 200, kSteps = 6 };
 
@@ -310,10 +303,5 @@ int main(void) {
   axis_normals_give_permuted_forces();
   tilted_ground_gives_rotated_forces();
   a_new_normal_forgets_the_fragments();
-  if (failures != 0) {
-    fprintf(stderr, "ground_normal_test: %d checks failed\n", failures);
-    return 1;
-  }
-  printf("ground_normal_test: all checks passed\n");
-  return 0;
+  return check_verdict("ground_normal_test");
 }
