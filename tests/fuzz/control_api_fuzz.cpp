@@ -1,7 +1,8 @@
 // libFuzzer target: the controller library's C API (fragsim/control.h) as a careless engine drives
 // it: random defs, cameras, fragments with NaN, infinities, huge and negative numbers, ids that
 // repeat, counts out of range, struct or strided-array input with random strides, several steps
-// on one controller, and allocations that fail.
+// on one controller, cameras set once (0 to 3 of them, or a count out of range) and poses for
+// some or all of them, and allocations that fail.
 //
 // Input: bytes read by FuzzedDataProvider (choices first, then numbers; missing bytes read as 0).
 //
@@ -17,6 +18,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -79,6 +81,7 @@ bool valid_status(fragsim_status s) {
 struct Call {
   fragsim_step_input input{};
   std::vector<fragsim_fragment> fragments;
+  std::vector<fragsim_camera_pose> poses;  // camera_count of them (input.camera_poses)
   bool arrays = false;
   bool floats = false;  // arrays of floats (scalar_type FRAGSIM_SCALAR_FLOAT)
   int32_t count = 0;
@@ -111,6 +114,23 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
   if (in.ConsumeBool()) cam.max_speed_mps = number(in, 0, 100);
   if (in.ConsumeBool()) cam.max_accel_mps2 = number(in, 0, 1000);
   if (in.ConsumeBool()) cam.max_turn_radps = number(in, 0, 100);
+  if (in.ConsumeBool()) {  // several cameras: often the controller's count, sometimes not
+    const int k = in.ConsumeIntegralInRange<int>(0, 4);
+    for (int j = 0; j < k; ++j) {
+      fragsim_camera_pose p = fragsim_default_camera_pose();
+      p.eye_m = {0.064 * j, 0.0, 0.0};
+      if (in.ConsumeBool()) p.eye_m = vec(in, -10, 10);
+      if (in.ConsumeBool()) p.velocity_mps = vec(in, -60, 60);
+      if (in.ConsumeBool()) {  // facing the other way, or not unit: refused
+        p.forward = in.ConsumeBool() ? fragsim_vec3{0, 0, 1} : vec(in, -1, 1);
+        p.right = {-1, 0, 0};
+      }
+      c.poses.push_back(p);
+    }
+    s.camera_count = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? -1 : k;
+    s.camera_poses =
+        c.poses.empty() || in.ConsumeIntegralInRange<int>(0, 15) == 0 ? nullptr : c.poses.data();
+  }
   const int n = in.ConsumeIntegralInRange<int>(0, 48);
   for (int i = 0; i < n; ++i) {
     fragsim_fragment f{};
@@ -258,6 +278,9 @@ Result run(fragsim_controller_id id, const Call& call_in, long fail_at) {
     require(stats.pushed <= c && stats.skipped <= c && stats.rejected_cheaply <= c);
     require(stats.first_skipped >= -1 && stats.first_skipped < c);
     require((stats.skipped == 0) == (stats.first_skipped == -1));
+    require(stats.conflicts >= 0 && stats.conflicts <= c);
+    require(stats.first_conflict >= -1 && stats.first_conflict < c);
+    require((stats.conflicts == 0) == (stats.first_conflict == -1));
   }
   return r;
 }
@@ -292,6 +315,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (in.ConsumeBool()) {
     const int32_t room = in.ConsumeIntegralInRange<int32_t>(-2, 64);
     require(fragsim_controller_reserve(a, room) == fragsim_controller_reserve(b, room));
+  }
+  if (in.ConsumeBool()) {  // cameras set once; a failed allocation must leave A as B
+    const int k = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? FRAGSIM_MAX_CAMERAS + 1
+                                                             : in.ConsumeIntegralInRange<int>(1, 3);
+    std::vector<fragsim_camera_def> defs(static_cast<std::size_t>(std::max(k, 1)),
+                                         fragsim_default_camera_def());
+    for (fragsim_camera_def& d : defs) {
+      if (in.ConsumeBool()) d.fovy_deg = number(in, 0, 180);
+      if (in.ConsumeBool()) d.near_m = number(in, 0, 2);
+      if (in.ConsumeBool()) d.body_half_m = vec(in, 0, 1);
+      if (in.ConsumeBool()) d.max_speed_mps = number(in, 0, 100);
+      if (in.ConsumeBool()) d.max_turn_radps = number(in, 0, 100);
+    }
+    const fragsim_status sb = fragsim_controller_set_cameras(b, defs.data(), k);
+    g_allocations = 0;
+    g_fail_at = in.ConsumeBool() ? in.ConsumeIntegralInRange<long>(1, 8) : 0;
+    fragsim_status sa = fragsim_controller_set_cameras(a, defs.data(), k);
+    g_fail_at = 0;
+    require(valid_status(sa) && valid_status(sb));
+    if (sa == FRAGSIM_ERROR_OUT_OF_MEMORY) sa = fragsim_controller_set_cameras(a, defs.data(), k);
+    require(sa == sb);
   }
   const int steps = in.ConsumeIntegralInRange<int>(1, 6);
   for (int k = 0; k < steps && in.remaining_bytes() > 0; ++k) {

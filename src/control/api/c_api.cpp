@@ -121,7 +121,17 @@ FRAGSIM_API fragsim_step_input fragsim_default_step_input(void) {
   in.camera = fragsim_default_camera();
   in.fragments = nullptr;
   in.fragment_count = 0;
+  in.camera_poses = nullptr;
+  in.camera_count = 0;  // one camera, in.camera, as before 0.7
   return in;
+}
+
+FRAGSIM_API fragsim_camera_def fragsim_default_camera_def(void) {
+  return fragsim::control::def_of(fragsim_default_camera());
+}
+
+FRAGSIM_API fragsim_camera_pose fragsim_default_camera_pose(void) {
+  return fragsim::control::pose_of(fragsim_default_camera());
 }
 
 FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
@@ -204,6 +214,40 @@ FRAGSIM_API fragsim_status fragsim_controller_reserve(fragsim_controller_id cont
   }
   try {
     c->reserve(static_cast<std::size_t>(fragment_count));
+  } catch (...) {
+    c->set_error("out of memory");
+    return FRAGSIM_ERROR_OUT_OF_MEMORY;
+  }
+  c->clear_error();
+  return FRAGSIM_OK;
+}
+
+FRAGSIM_API fragsim_status fragsim_controller_set_cameras(fragsim_controller_id controller,
+                                                          const fragsim_camera_def* cameras,
+                                                          int32_t camera_count) {
+  Controller* c = find_controller(controller);
+  if (c == nullptr) return FRAGSIM_ERROR_STALE_ID;
+  if (camera_count < 1 || camera_count > FRAGSIM_MAX_CAMERAS) {
+    char why[96];
+    std::snprintf(why, sizeof why, "camera_count = %d: must be in [1, FRAGSIM_MAX_CAMERAS = %d]",
+                  static_cast<int>(camera_count), FRAGSIM_MAX_CAMERAS);
+    c->set_error(why);
+    return FRAGSIM_ERROR_INVALID_ARGUMENT;
+  }
+  if (cameras == nullptr) {
+    c->set_error("cameras: NULL");
+    return FRAGSIM_ERROR_NULL_ARGUMENT;
+  }
+  for (int32_t j = 0; j < camera_count; ++j) {
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "cameras[%d]", static_cast<int>(j));
+    if (Failure f = fragsim::control::validate_camera_def(cameras[j], prefix)) {
+      c->set_error(f.message);
+      return f.status;
+    }
+  }
+  try {
+    c->set_cameras(cameras, camera_count);
   } catch (...) {
     c->set_error("out of memory");
     return FRAGSIM_ERROR_OUT_OF_MEMORY;

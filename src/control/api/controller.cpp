@@ -1,6 +1,7 @@
 #include "api/controller.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -51,7 +52,7 @@ void StrategyDelete::operator()(Strategy* s) const noexcept {
 }
 
 template <class S, class Params>
-S* Controller::make_strategy(const Params& params) {
+StrategyPtr Controller::make_strategy(const Params& params, S** made) {
   void* p = mem_->allocate(sizeof(S), alignof(S));
   S* s = nullptr;
   try {
@@ -60,25 +61,50 @@ S* Controller::make_strategy(const Params& params) {
     mem_->deallocate(p, sizeof(S), alignof(S));
     throw;
   }
-  strategy_ = std::unique_ptr<Strategy, StrategyDelete>(s, {mem_, sizeof(S), alignof(S)});
-  return s;
+  *made = s;
+  return StrategyPtr(s, {mem_, sizeof(S), alignof(S)});
 }
 
-Controller::Controller(const fragsim_controller_def& def) : hook_(def) {
-  switch (raw(def.strategy)) {
+CameraSlot Controller::make_slot() {
+  CameraSlot slot(mem_);
+  switch (raw(def_.strategy)) {
     case FRAGSIM_STRATEGY_EDGE_MIN:
-      edge_min_ = make_strategy<EdgeMinStrategy>(edge_min_params(def));
-      // The occlusion bound allocates inside its step, after changing its state.
-      undo_safe_ = !(def.edge_min.cover_max < 1.0);
+      slot.strategy = make_strategy(edge_min_params(def_), &slot.edge_min);
       break;
     case FRAGSIM_STRATEGY_EDGE:
-      edge_ = make_strategy<EdgeStrategy>(edge_params(def));
+      slot.strategy = make_strategy(edge_params(def_), &slot.edge);
       break;
-    case FRAGSIM_STRATEGY_DEFLECT_ALL:
-      make_strategy<DeflectAllStrategy>(deflect_all_params(def));
+    case FRAGSIM_STRATEGY_DEFLECT_ALL: {
+      DeflectAllStrategy* unused = nullptr;
+      slot.strategy = make_strategy(deflect_all_params(def_), &unused);
       break;
+    }
   }
+  slot.strategy->reset(0);
+  if (room_ > 0) {
+    slot.strategy->reserve(static_cast<int>(room_));
+    slot.out.reserve(room_);
+  }
+  return slot;
+}
+
+Controller::Controller(const fragsim_controller_def& def) : hook_(def), def_(def) {
+  // The occlusion bound allocates inside its step, after changing its state.
+  undo_safe_ = !(raw(def.strategy) == FRAGSIM_STRATEGY_EDGE_MIN && def.edge_min.cover_max < 1.0);
+  slots_.reserve(FRAGSIM_MAX_CAMERAS);
+  slots_.push_back(make_slot());
   reset();
+}
+
+void Controller::set_cameras(const fragsim_camera_def* cameras, int count) {
+  // Everything that can fail first: the new cameras' strategies and the probe.
+  if (count > 1 && raw(def_.strategy) == FRAGSIM_STRATEGY_EDGE_MIN) {
+    joint_.make_probe(edge_min_params(def_));
+  }
+  if (count > 1) joint_.reserve(room_);
+  while (static_cast<int>(slots_.size()) < count) slots_.push_back(make_slot());
+  for (int j = 0; j < count; ++j) slots_[static_cast<std::size_t>(j)].def = cameras[j];
+  camera_count_ = count;
 }
 
 void Controller::set_error(const char* why) noexcept {
@@ -86,7 +112,7 @@ void Controller::set_error(const char* why) noexcept {
 }
 
 void Controller::reset() {
-  strategy_->reset(0);
+  for (CameraSlot& slot : slots_) slot.strategy->reset(0);
   last_ids_.clear();
   ids_[0].clear(0);
   ids_[1].clear(0);
@@ -108,7 +134,11 @@ void Controller::reserve_work(std::size_t n) {
   if (previous_.size() < n) previous_.resize(n);
   last_ids_.reserve(n);
   out_.reserve(n);
-  strategy_->reserve(static_cast<int>(n));
+  for (CameraSlot& slot : slots_) {
+    slot.strategy->reserve(static_cast<int>(n));
+    slot.out.reserve(n);
+  }
+  if (slots_.size() > 1) joint_.reserve(n);
   room_ = n;
 }
 
@@ -145,17 +175,72 @@ void Controller::warn_once(std::uint32_t warnings, const fragsim_camera& c) {
 #endif
 }
 
+StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_camera& c,
+                                    const GroundFrame& frame, std::size_t m) const {
+  StepContext ctx;
+  ctx.step = 0;
+  ctx.t_s = in.time_s;
+  ctx.dt_s = in.dt_s;
+  // A game has no scene end: the look-ahead comes from the physics, capped by the def's
+  // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
+  ctx.end_time_s = in.end_time_s;
+  ctx.camera.eye_m = frame.in(vec(c.eye_m));
+  ctx.camera.right = frame.in(vec(c.right));
+  ctx.camera.up = frame.in(vec(c.up));
+  ctx.camera.forward = frame.in(vec(c.forward));
+  ctx.camera.fovy_deg = c.fovy_deg;
+  ctx.camera.aspect = c.aspect;
+  ctx.camera.near_m = c.near_m;
+  ctx.camera.far_m = c.far_m;
+  ctx.camera_velocity_mps = frame.in(vec(c.velocity_mps));
+  ctx.camera_max_speed_mps = c.max_speed_mps;
+  // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound: passed on as it is.
+  ctx.camera_max_accel_mps2 = c.max_accel_mps2;
+  ctx.camera_max_turn_radps = c.max_turn_radps;
+  ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes: not rotated
+  ctx.gravity_mps2 = frame.in(vec(in.gravity_mps2));
+  ctx.ground_height_m = in.ground_height_m;
+  ctx.fragments = std::span<const FragmentState>(states_.data(), m);
+  return ctx;
+}
+
+void Controller::undo_carry_over(int cameras) {
+  for (int j = 0; j < cameras; ++j) {
+    CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
+    if (slot.edge != nullptr) slot.edge->undo_carry_over();
+    if (slot.edge_min != nullptr) slot.edge_min->undo_carry_over();
+  }
+}
+
 template <class Source, class Sink>
 fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
                                 const Sink& sink, fragsim_step_stats* stats) {
   // Phase 1: checks and room. Nothing here changes the controller's state.
   if (Failure f = validate_step_input(in)) return failed(f);
+  if (in.camera_count > 0 && in.camera_count != camera_count_) {
+    return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                       "camera_count = %d: the controller has %d camera(s) set "
+                       "(fragsim_controller_set_cameras)",
+                       static_cast<int>(in.camera_count), camera_count_));
+  }
+  const int cameras = in.camera_count > 0 ? in.camera_count : 1;
+  std::array<fragsim_camera, FRAGSIM_MAX_CAMERAS> whole;
+  if (in.camera_count == 0) {
+    whole[0] = in.camera;
+  } else {
+    for (int j = 0; j < cameras; ++j) {
+      const auto k = static_cast<std::size_t>(j);
+      whole[k] = whole_camera(slots_[k].def, in.camera_poses[j]);
+    }
+  }
   // The id table this step fills grows below, only if it must (a table grown here for nothing
   // would cost the first call its page faults).
   reserve_work(n);
   const GroundFrame frame(in.ground_normal);
-  // The strategies' state is in the last step's frame: another normal starts afresh (below).
-  const bool new_frame = has_normal_ && !same_bits(in.ground_normal, last_normal_);
+  // The strategies' state is in the last step's frame, and for the last step's cameras: another
+  // normal, or another camera count, starts afresh (below).
+  const bool new_frame =
+      has_normal_ && (!same_bits(in.ground_normal, last_normal_) || cameras != last_cameras_);
   std::size_t m = 0;
   int skipped = 0;
   int first_skipped = -1;
@@ -208,46 +293,44 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     dropped_ids = static_cast<int>(last_ids_.size()) - kept;
   }
 
-  StepContext ctx;
-  ctx.step = 0;
-  ctx.t_s = in.time_s;
-  ctx.dt_s = in.dt_s;
-  // A game has no scene end: the look-ahead comes from the physics, capped by the def's
-  // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
-  ctx.end_time_s = in.end_time_s;
-  const fragsim_camera& c = in.camera;
-  ctx.camera.eye_m = frame.in(vec(c.eye_m));
-  ctx.camera.right = frame.in(vec(c.right));
-  ctx.camera.up = frame.in(vec(c.up));
-  ctx.camera.forward = frame.in(vec(c.forward));
-  ctx.camera.fovy_deg = c.fovy_deg;
-  ctx.camera.aspect = c.aspect;
-  ctx.camera.near_m = c.near_m;
-  ctx.camera.far_m = c.far_m;
-  ctx.camera_velocity_mps = frame.in(vec(c.velocity_mps));
-  ctx.camera_max_speed_mps = c.max_speed_mps;
-  // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound: passed on as it is.
-  ctx.camera_max_accel_mps2 = c.max_accel_mps2;
-  ctx.camera_max_turn_radps = c.max_turn_radps;
-  ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes: not rotated
-  ctx.gravity_mps2 = frame.in(vec(in.gravity_mps2));
-  ctx.ground_height_m = in.ground_height_m;
-  ctx.fragments = std::span<const FragmentState>(states_.data(), m);
+  std::array<StepContext, FRAGSIM_MAX_CAMERAS> contexts;
+  std::array<const StepOutput*, FRAGSIM_MAX_CAMERAS> outs{};
+  for (int j = 0; j < cameras; ++j) {
+    const auto k = static_cast<std::size_t>(j);
+    contexts[k] = context_for(in, whole[k], frame, m);
+    outs[k] = &slots_[k].out;
+  }
 
-  // Phase 2: the strategy, in the room made above.
+  // Phase 2: the strategies, in the room made above.
   const std::span<const int> previous(previous_.data(), m);
+  JointPush::Conflicts conflicts;
   try {
-    // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
-    // frame resets it as reset() would (its failure below forgets everything too).
-    if (new_frame && !undo_safe_) strategy_->reset(0);
-    if (!same_ids && edge_ != nullptr) edge_->carry_over(previous);
-    if (!same_ids && edge_min_ != nullptr) edge_min_->carry_over(previous);
-    out_.clear();
-    strategy_->step(ctx, out_);
+    for (int j = 0; j < cameras; ++j) {
+      CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
+      // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
+      // frame resets it as reset() would (its failure below forgets everything too).
+      if (new_frame && !undo_safe_) slot.strategy->reset(0);
+      if (!same_ids && slot.edge != nullptr) slot.edge->carry_over(previous);
+      if (!same_ids && slot.edge_min != nullptr) slot.edge_min->carry_over(previous);
+    }
+    for (int j = 0; j < cameras; ++j) {
+      CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
+      // One camera answers the step itself; several answer to the join below.
+      StepOutput& answer = cameras == 1 ? out_ : slot.out;
+      answer.clear();
+      slot.strategy->step(contexts[static_cast<std::size_t>(j)], answer);
+    }
+    if (cameras > 1) {
+      out_.clear();
+      conflicts = joint_.join(std::span<const StepContext>(contexts.data(), contexts.size())
+                                  .first(static_cast<std::size_t>(cameras)),
+                              std::span<const StepOutput* const>(outs.data(), outs.size())
+                                  .first(static_cast<std::size_t>(cameras)),
+                              std::span<const FragmentState>(states_.data(), m), out_);
+    }
   } catch (const std::bad_alloc&) {
     if (undo_safe_) {
-      if (!same_ids && edge_ != nullptr) edge_->undo_carry_over();
-      if (!same_ids && edge_min_ != nullptr) edge_min_->undo_carry_over();
+      if (!same_ids) undo_carry_over(cameras);
       set_error("out of memory");
     } else {
       reset();
@@ -284,8 +367,14 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   }
   last_normal_ = in.ground_normal;
   has_normal_ = true;
-  const std::uint32_t warnings = camera_warnings(c);
-  if (warnings != 0) warn_once(warnings, c);
+  last_cameras_ = cameras;
+  std::uint32_t warnings = 0;
+  for (int j = 0; j < cameras; ++j) {
+    const fragsim_camera& c = whole[static_cast<std::size_t>(j)];
+    const std::uint32_t w = camera_warnings(c);
+    if (w != 0) warn_once(w, c);
+    warnings |= w;
+  }
   if (stats != nullptr) {
     stats->candidates = static_cast<std::int32_t>(out_.activity.candidates.size());
     stats->pushed = pushed;
@@ -299,6 +388,9 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     stats->first_skipped = first_skipped;
     stats->unprotected = unprotected;
     stats->warnings = warnings;
+    stats->conflicts = conflicts.count;
+    stats->first_conflict =
+        conflicts.first < 0 ? -1 : caller_index_[static_cast<std::size_t>(conflicts.first)];
   }
   clear_error();
   return FRAGSIM_OK;

@@ -13,6 +13,12 @@
 // hook, or operator new and delete. The strategies run in the frame of the step's ground normal
 // (GroundFrame); the state they keep per fragment lives in that frame, so a step with another
 // normal than the last successful one forgets every fragment first.
+//
+// Several cameras (since 0.7): one strategy per camera, each with its own state, run as for one
+// camera; their pushes on a fragment are then joined (JointPush in joint_push.hpp), edge-min's by
+// rounds of probes that ask each camera for its least extra push on the pushed path. A step with
+// another camera count than the last successful one forgets every fragment first, like a new
+// normal: the strategies of the cameras added have no state for them.
 
 #include <cstdint>
 #include <memory>
@@ -22,6 +28,7 @@
 #include "api/hook_resource.hpp"
 #include "api/id_table.hpp"
 #include "api/input_checks.hpp"
+#include "api/joint_push.hpp"
 #include "fragsim/control.h"
 #include "geometry/fragment_state.hpp"
 #include "strategies/strategy.hpp"
@@ -33,12 +40,25 @@ class EdgeMinStrategy;
 
 namespace fragsim::control {
 
+class GroundFrame;
+
 // Destroys a strategy allocated from a controller's resource.
 struct StrategyDelete {
   std::pmr::memory_resource* mem = nullptr;
   std::size_t size = 0;
   std::size_t align = 0;
   void operator()(Strategy* s) const noexcept;
+};
+using StrategyPtr = std::unique_ptr<Strategy, StrategyDelete>;
+
+// One camera's strategy, its answer of the step, and its constants when set on the controller.
+struct CameraSlot {
+  explicit CameraSlot(std::pmr::memory_resource* mem) : out(mem) {}
+  StrategyPtr strategy;
+  EdgeStrategy* edge = nullptr;         // the same object, when it keeps per-fragment state
+  EdgeMinStrategy* edge_min = nullptr;  // likewise (its budget's last forces)
+  StepOutput out;
+  fragsim_camera_def def{};
 };
 
 class Controller {
@@ -54,6 +74,9 @@ class Controller {
   // Room for steps of up to n fragments, every id new included. May throw std::bad_alloc,
   // changing nothing of the state.
   void reserve(std::size_t n);
+  // The constants of `count` cameras (valid, in [1, FRAGSIM_MAX_CAMERAS]). May throw
+  // std::bad_alloc (a new camera's strategy), changing nothing.
+  void set_cameras(const fragsim_camera_def* cameras, int count);
 
   // One step over n fragments read from `source`, forces written to `sink` (zeros on failure are
   // the caller's: see guarded_step in c_api.cpp). May throw std::bad_alloc from the first phase.
@@ -73,19 +96,29 @@ class Controller {
   Controller& operator=(const Controller&) = delete;
 
   template <class S, class Params>
-  S* make_strategy(const Params& params);
+  StrategyPtr make_strategy(const Params& params, S** made);
+  // A camera's strategy as the def says; its room made for room_ fragments.
+  CameraSlot make_slot();
 
   fragsim_status failed(const Failure& f);
   // reserve() but for the id tables.
   void reserve_work(std::size_t n);
   void warn_once(std::uint32_t warnings, const fragsim_camera& camera);
+  // The cameras of this step, whole, in the strategies' frame.
+  StepContext context_for(const fragsim_step_input& in, const fragsim_camera& camera,
+                          const GroundFrame& frame, std::size_t m) const;
+  void undo_carry_over(int cameras);
 
   HookResource hook_;  // first: everything below is allocated from it
   std::pmr::memory_resource* mem_ = &hook_;
-  std::unique_ptr<Strategy, StrategyDelete> strategy_;
-  EdgeStrategy* edge_ = nullptr;         // the same object, when it keeps per-fragment state
-  EdgeMinStrategy* edge_min_ = nullptr;  // likewise (its budget's last forces)
-  bool undo_safe_ = true;                // a failure inside the strategy's step changed nothing
+  fragsim_controller_def def_;
+  // slots_[0] always; more from set_cameras (room for FRAGSIM_MAX_CAMERAS made at creation, so
+  // the slots never move).
+  std::pmr::vector<CameraSlot> slots_{mem_};
+  int camera_count_ = 0;   // cameras set by set_cameras (0: none)
+  int last_cameras_ = 1;   // cameras of the last successful step
+  JointPush joint_{mem_};  // several cameras' pushes joined
+  bool undo_safe_ = true;  // a failure inside the strategy's step changed nothing
   char error_[Failure::kMessageSize] = {};
   std::uint32_t warned_ = 0;  // FRAGSIM_WARNING_* bits seen (printed once each in debug builds)
 
@@ -96,8 +129,8 @@ class Controller {
   std::pmr::vector<std::int32_t> caller_index_{mem_};
   std::pmr::vector<std::uint64_t> ids_now_{mem_};
   std::pmr::vector<int> previous_{
-      mem_};  // this step's fragment k was previous_[k] last step, or -1
-  StepOutput out_{mem_};
+      mem_};              // this step's fragment k was previous_[k] last step, or -1
+  StepOutput out_{mem_};  // the step's answer: slots_[0].out's for one camera, joint_'s for more
   std::size_t room_ = 0;  // the fragment count reserve() made room for
 
   // The state kept between calls: the last successful step's ids, in order, and as a table; the

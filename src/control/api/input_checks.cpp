@@ -173,16 +173,23 @@ Failure validate_ground_normal(const fragsim_vec3& n) {
   return {};
 }
 
-Failure validate_frame(const fragsim_camera& c) {
-  const fragsim_vec3* axes[3] = {&c.right, &c.up, &c.forward};
-  const char* names[3] = {"camera.right", "camera.up", "camera.forward"};
+// prefix.field, as the caller names it ("camera.near_m", "cameras[1].near_m").
+struct FieldName {
+  char text[64];
+  FieldName(const char* prefix, const char* field) {
+    std::snprintf(text, sizeof text, "%s.%s", prefix, field);
+  }
+};
+
+Failure validate_frame(const fragsim_vec3* const (&axes)[3], const char* prefix) {
+  const FieldName names[3] = {{prefix, "right"}, {prefix, "up"}, {prefix, "forward"}};
   for (int k = 0; k < 3; ++k) {
-    if (Failure f = check_vec(*axes[k], names[k], finite, "must be finite")) return f;
+    if (Failure f = check_vec(*axes[k], names[k].text, finite, "must be finite")) return f;
     const fragsim_vec3& a = *axes[k];
     const double n = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
     if (!(std::abs(n - 1.0) <= kFrameTolerance)) {
       return fail(FRAGSIM_ERROR_INVALID_ARGUMENT, "%s has length %.9g: must be 1 (within 1e-6)",
-                  names[k], n);
+                  names[k].text, n);
     }
   }
   for (int k = 0; k < 3; ++k) {
@@ -191,8 +198,8 @@ Failure validate_frame(const fragsim_camera& c) {
     const double dot = a.x * b.x + a.y * b.y + a.z * b.z;
     if (!(std::abs(dot) <= kFrameTolerance)) {
       return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
-                  "%s . %s = %.9g: the camera axes must be at right angles (within 1e-6)", names[k],
-                  names[(k + 1) % 3], dot);
+                  "%s . %s = %.9g: the camera axes must be at right angles (within 1e-6)",
+                  names[k].text, names[(k + 1) % 3].text, dot);
     }
   }
   return {};
@@ -200,9 +207,45 @@ Failure validate_frame(const fragsim_camera& c) {
 
 }  // namespace
 
+Failure validate_camera_pose(const fragsim_camera_pose& p, const char* prefix) {
+  const fragsim_vec3* const axes[3] = {&p.right, &p.up, &p.forward};
+  Failure f;
+  if ((f = check_vec(p.eye_m, FieldName(prefix, "eye_m").text, finite, "must be finite")) ||
+      (f = validate_frame(axes, prefix)) ||
+      (f = check_vec(p.velocity_mps, FieldName(prefix, "velocity_mps").text, finite,
+                     "must be finite"))) {
+    return f;
+  }
+  return {};
+}
+
+Failure validate_camera_def(const fragsim_camera_def& c, const char* prefix) {
+  const FieldName near_m(prefix, "near_m");
+  char far_rule[96];
+  std::snprintf(far_rule, sizeof far_rule, "must be finite and > %s", near_m.text);
+  Failure f;
+  if ((f = check(finite(c.fovy_deg) && c.fovy_deg > 0.0 && c.fovy_deg < 180.0,
+                 FieldName(prefix, "fovy_deg").text, c.fovy_deg, "must be in (0, 180)")) ||
+      (f = check(positive(c.aspect), FieldName(prefix, "aspect").text, c.aspect,
+                 "must be finite and > 0")) ||
+      (f = check(positive(c.near_m), near_m.text, c.near_m, "must be finite and > 0")) ||
+      (f = check(finite(c.far_m) && c.far_m > c.near_m, FieldName(prefix, "far_m").text, c.far_m,
+                 far_rule)) ||
+      (f = check_vec(c.body_half_m, FieldName(prefix, "body_half_m").text, nonnegative,
+                     "must be finite, >= 0")) ||
+      (f = check(nonnegative(c.max_speed_mps), FieldName(prefix, "max_speed_mps").text,
+                 c.max_speed_mps, "must be finite and >= 0")) ||
+      (f = check(bound(c.max_accel_mps2), FieldName(prefix, "max_accel_mps2").text,
+                 c.max_accel_mps2, "must be >= 0, INFINITY or FRAGSIM_UNDECLARED")) ||
+      (f = check(bound(c.max_turn_radps), FieldName(prefix, "max_turn_radps").text,
+                 c.max_turn_radps, "must be >= 0, INFINITY or FRAGSIM_UNDECLARED"))) {
+    return f;
+  }
+  return {};
+}
+
 Failure validate_step_input(const fragsim_step_input& in) {
   Failure f;
-  const fragsim_camera& c = in.camera;
   if ((f = check(finite(in.time_s), "time_s", in.time_s, "must be finite")) ||
       (f = check(!std::isnan(in.end_time_s), "end_time_s", in.end_time_s,
                  "must be a time or INFINITY"))) {
@@ -221,24 +264,30 @@ Failure validate_step_input(const fragsim_step_input& in) {
       (f = check(finite(in.ground_height_m) ||
                      in.ground_height_m == -std::numeric_limits<double>::infinity(),
                  "ground_height_m", in.ground_height_m, "must be finite, or -INFINITY for none")) ||
-      (f = validate_ground_normal(in.ground_normal)) ||
-      (f = check_vec(c.eye_m, "camera.eye_m", finite, "must be finite")) ||
-      (f = validate_frame(c)) ||
-      (f = check_vec(c.velocity_mps, "camera.velocity_mps", finite, "must be finite")) ||
-      (f = check(finite(c.fovy_deg) && c.fovy_deg > 0.0 && c.fovy_deg < 180.0, "camera.fovy_deg",
-                 c.fovy_deg, "must be in (0, 180)")) ||
-      (f = check(positive(c.aspect), "camera.aspect", c.aspect, "must be finite and > 0")) ||
-      (f = check(positive(c.near_m), "camera.near_m", c.near_m, "must be finite and > 0")) ||
-      (f = check(finite(c.far_m) && c.far_m > c.near_m, "camera.far_m", c.far_m,
-                 "must be finite and > camera.near_m")) ||
-      (f = check_vec(c.body_half_m, "camera.body_half_m", nonnegative, "must be finite, >= 0")) ||
-      (f = check(nonnegative(c.max_speed_mps), "camera.max_speed_mps", c.max_speed_mps,
-                 "must be finite and >= 0")) ||
-      (f = check(bound(c.max_accel_mps2), "camera.max_accel_mps2", c.max_accel_mps2,
-                 "must be >= 0, INFINITY or FRAGSIM_UNDECLARED")) ||
-      (f = check(bound(c.max_turn_radps), "camera.max_turn_radps", c.max_turn_radps,
-                 "must be >= 0, INFINITY or FRAGSIM_UNDECLARED"))) {
+      (f = validate_ground_normal(in.ground_normal))) {
     return f;
+  }
+  if (in.camera_count == 0) {
+    if ((f = validate_camera_pose(pose_of(in.camera), "camera")) ||
+        (f = validate_camera_def(def_of(in.camera), "camera"))) {
+      return f;
+    }
+    return {};
+  }
+  if (in.camera_count < 0 || in.camera_count > FRAGSIM_MAX_CAMERAS) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "camera_count = %d: must be 0 (input.camera) or the controller's cameras, at most "
+                "FRAGSIM_MAX_CAMERAS = %d",
+                static_cast<int>(in.camera_count), FRAGSIM_MAX_CAMERAS);
+  }
+  if (in.camera_poses == nullptr) {
+    return fail(FRAGSIM_ERROR_NULL_ARGUMENT, "camera_poses: NULL with camera_count = %d",
+                static_cast<int>(in.camera_count));
+  }
+  for (int k = 0; k < in.camera_count; ++k) {
+    char prefix[32];
+    std::snprintf(prefix, sizeof prefix, "camera_poses[%d]", k);
+    if ((f = validate_camera_pose(in.camera_poses[k], prefix))) return f;
   }
   return {};
 }

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "api/camera_parts.hpp"
 #include "fragsim/control.h"
 
 namespace fragsim::control {
@@ -22,7 +23,12 @@ struct Failure {
 [[gnu::format(printf, 2, 3)]] Failure fail(fragsim_status status, const char* format, ...);
 
 Failure validate_def(const fragsim_controller_def& def);
+// The step's input; with camera_count > 0 its count (in range, not yet against the controller's)
+// and each pose.
 Failure validate_step_input(const fragsim_step_input& in);
+// One camera's constants and one pose, each failure naming prefix.field ("cameras[1].near_m").
+Failure validate_camera_def(const fragsim_camera_def& camera, const char* prefix);
+Failure validate_camera_pose(const fragsim_camera_pose& pose, const char* prefix);
 // The strided arrays' scalar_type, and their strides when count > 1 (each at least its element's
 // size). The pointers are the caller's to check.
 Failure validate_arrays(const fragsim_fragment_arrays& arrays, std::size_t count);

@@ -3,7 +3,8 @@
 // library makes is seen here. Built against the library alone, no test framework.
 //
 // - A steady step (the same ids as the last) allocates nothing, nor does the explosion's step
-//   (every id new) after fragsim_controller_reserve.
+//   (every id new) after fragsim_controller_reserve; with one camera, and with two set once
+//   (two eyes 6.4 cm apart, whose pushes are joined in rounds).
 // - For every N, failing the Nth allocation of a step returns FRAGSIM_ERROR_OUT_OF_MEMORY with zero
 //   forces and leaves the controller as before the call: the same step retried, and the steps
 //   after it, give the forces of a controller that never failed.
@@ -87,12 +88,33 @@ Scenario make_scenario() {
   return s;
 }
 
+// The cameras of the configuration being checked: 0, the one camera of the step input; 2, two
+// eyes 6.4 cm apart set once on the controller (set_cameras below), their poses per step.
+int g_cameras = 0;
+fragsim_camera_pose g_poses[2];
+
+void set_cameras(fragsim_controller_id c) {
+  if (g_cameras == 0) return;
+  const fragsim_camera_def defs[2] = {fragsim_default_camera_def(), fragsim_default_camera_def()};
+  if (fragsim_controller_set_cameras(c, defs, g_cameras) != FRAGSIM_OK) std::abort();
+}
+
 fragsim_step_input input_at(const Scenario& s, int step) {
   fragsim_step_input in = fragsim_default_step_input();
   in.time_s = step * kDt;
   in.ground_height_m = -1.6;
   in.camera.velocity_mps = {0.0, 0.0, -1.0};
   in.camera.eye_m = {0.0, 0.0, -1.0 * step * kDt};
+  if (g_cameras > 0) {
+    for (int j = 0; j < 2; ++j) {
+      g_poses[j] = fragsim_default_camera_pose();
+      g_poses[j].velocity_mps = in.camera.velocity_mps;
+      g_poses[j].eye_m = in.camera.eye_m;
+      g_poses[j].eye_m.x += j == 0 ? -0.032 : 0.032;
+    }
+    in.camera_poses = g_poses;
+    in.camera_count = g_cameras;
+  }
   in.fragments = s.steps[static_cast<std::size_t>(step)].data();
   in.fragment_count = static_cast<int32_t>(s.steps[static_cast<std::size_t>(step)].size());
   return in;
@@ -146,6 +168,7 @@ bool all_zero(const Forces& f) {
 fragsim_controller_id prepared(const Config& cfg, const Scenario& s, int k) {
   fragsim_controller_id c{};
   if (fragsim_controller_create(&cfg.def, &c, nullptr, 0) != FRAGSIM_OK) std::abort();
+  set_cameras(c);
   Forces f;
   for (int j = 0; j < k; ++j) {
     if (step(c, s, j, f) != FRAGSIM_OK) std::abort();
@@ -220,13 +243,15 @@ void check_config(const Config& cfg, const Scenario& s) {
       fragsim_controller_destroy(c);
     }
   }
-  std::printf("%s: %d steps pushed; %ld failed allocations, each left the controller as it was\n",
-              cfg.name, pushed, failed_calls);
+  std::printf(
+      "%s, %s: %d steps pushed; %ld failed allocations, each left the controller as it was\n",
+      cfg.name, g_cameras == 0 ? "one camera" : "two cameras set once", pushed, failed_calls);
 
   // After fragsim_controller_reserve the explosion's step (every id new) allocates nothing.
   {
     fragsim_controller_id c{};
     CHECK(fragsim_controller_create(&cfg.def, &c, nullptr, 0) == FRAGSIM_OK);
+    set_cameras(c);
     CHECK(fragsim_controller_reserve(c, kFragments) == FRAGSIM_OK);
     fragsim_status st = FRAGSIM_OK;
     const long n = allocations_of_step(c, s, 0, st);
@@ -241,6 +266,9 @@ void check_config(const Config& cfg, const Scenario& s) {
 
 int main() {
   const Scenario s = make_scenario();
-  for (const Config& cfg : configs()) check_config(cfg, s);
+  for (const int cameras : {0, 2}) {
+    g_cameras = cameras;
+    for (const Config& cfg : configs()) check_config(cfg, s);
+  }
   return check_verdict("allocation_test");
 }

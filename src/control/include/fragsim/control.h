@@ -13,6 +13,11 @@
  *   each physics step: set in's camera pose and velocity, time and fragments, call
  *   fragsim_controller_step, apply the forces (the rules for engines: "Applying the forces")
  *   fragsim_controller_destroy(ctl);
+ * or, the camera's constants set once (and several cameras, since 0.7):
+ *   fragsim_camera_def cam = fragsim_default_camera_def();  (set fovy_deg, body, bounds)
+ *   fragsim_controller_set_cameras(ctl, &cam, 1);
+ *   fragsim_camera_pose pose;  in.camera_poses = &pose;  in.camera_count = 1;
+ *   each physics step: set pose (eye, axes, velocity), time and fragments, step as above
  *
  * DOUBLES, or floats where said. Every number this header passes is a double (fragsim_vec3 is
  * three doubles), except the strided arrays of fragsim_controller_step_arrays, which since 0.6 may
@@ -21,6 +26,11 @@
  *
  * ANY UP AXIS (since 0.6). The ground is the plane dot(ground_normal, p) = ground_height_m and
  * gravity any vector: a Z-up engine passes ground_normal (0, 0, 1) and its own coordinates.
+ *
+ * CAMERAS SET ONCE, AND SEVERAL OF THEM (since 0.7). fragsim_controller_set_cameras keeps what
+ * does not move (frustum, body, declared bounds) on the controller, for 1 to FRAGSIM_MAX_CAMERAS
+ * cameras; each step then passes only their poses (step input camera_poses, camera_count). A
+ * step with camera_count 0 (the default) still takes its one camera whole from input.camera.
  *
  * Threads: the library creates none. Its one global is the table of controller slots behind the
  * ids (created and destroyed under a lock). One controller must be used by one thread at a time
@@ -67,9 +77,9 @@
 #include <stdint.h>
 
 /* Before 1.0 a minor version may change the structs, so the shared library is named for it
- * (libfragsim_control.so.0.6): a program built against another minor is not loaded with it. */
+ * (libfragsim_control.so.0.7): a program built against another minor is not loaded with it. */
 #define FRAGSIM_CONTROL_VERSION_MAJOR 0
-#define FRAGSIM_CONTROL_VERSION_MINOR 6
+#define FRAGSIM_CONTROL_VERSION_MINOR 7
 #define FRAGSIM_CONTROL_VERSION_PATCH 0
 /* major * 10000 + minor * 100 + patch, for #if comparisons. */
 #define FRAGSIM_CONTROL_VERSION                                                  \
@@ -106,6 +116,8 @@ typedef struct fragsim_vec3 {
 #define FRAGSIM_MAX_FRAGMENTS 536870911
 /* The most controllers alive at once in one process. */
 #define FRAGSIM_MAX_CONTROLLERS 65536
+/* The most cameras one controller protects at once (split-screen, two eyes of a headset). */
+#define FRAGSIM_MAX_CAMERAS 8
 /* A camera bound the game does not declare (fragsim_camera.max_accel_mps2, max_turn_radps). */
 #define FRAGSIM_UNDECLARED (-1.0)
 
@@ -302,6 +314,28 @@ typedef struct fragsim_camera {
   double max_turn_radps;
 } fragsim_camera;
 
+/* Since 0.7. What a camera keeps from step to step: fragsim_camera's constant fields, the same
+ * meanings and rules (set with fragsim_controller_set_cameras). */
+typedef struct fragsim_camera_def {
+  double fovy_deg;
+  double aspect;
+  double near_m;
+  double far_m;
+  fragsim_vec3 body_half_m;
+  double max_speed_mps;
+  double max_accel_mps2;
+  double max_turn_radps;
+} fragsim_camera_def;
+
+/* Since 0.7. What moves: fragsim_camera's pose and velocity, the same meanings and rules. */
+typedef struct fragsim_camera_pose {
+  fragsim_vec3 eye_m;
+  fragsim_vec3 right; /* orthonormal (within 1e-6), as in fragsim_camera */
+  fragsim_vec3 up;
+  fragsim_vec3 forward;
+  fragsim_vec3 velocity_mps;
+} fragsim_camera_pose;
+
 /* One fragment as the engine sees it after its last step. A fragment whose numbers break a rule
  * below (a NaN position, a negative or infinite mass: a static body) is skipped, not refused: it
  * gets a zero force, the others are protected as usual, and stats.skipped and
@@ -350,10 +384,34 @@ typedef struct fragsim_step_input {
    * normal differs (bit for bit) from the last successful step's forgets every fragment, as
    * fragsim_controller_reset does (stats.new_ids counts them all). */
   fragsim_vec3 ground_normal;
+  /* The camera when camera_count is 0 (the default): its pose and its constants, whole. Ignored
+   * when camera_count > 0. */
   fragsim_camera camera;
   const fragsim_fragment* fragments; /* may be NULL when fragment_count is 0 */
   int32_t fragment_count;            /* >= 0 */
+  /* Since 0.7. 0 (the default): one camera, input.camera. Otherwise the number of cameras the
+   * controller was given by fragsim_controller_set_cameras (another number is refused,
+   * FRAGSIM_ERROR_INVALID_ARGUMENT), and camera_poses their poses in the same order.
+   *
+   * With several cameras every fragment is kept off every camera's near rectangle and body: each
+   * camera's strategy runs as for one camera, and a fragment pushed for one camera is then checked
+   * against the others with that push applied. edge-min settles them in rounds: where another
+   * camera still sees a threat on the pushed path, its least extra push is added, until every
+   * camera is clear (two eyes of a headset, cameras apart) or FRAGSIM_CAMERA_ROUNDS rounds are
+   * spent: the fragment is then a conflict (stats.conflicts; its force is the last round's,
+   * capped at a_max_mps2, finite). Two cameras conflict where one's way out of the picture leads
+   * into the other's box: side-by-side cameras whose boxes lie closer than a fragment's diameter,
+   * or facing cameras a fragment passes between (fragsim's docs/camera_models.md, "Several
+   * cameras"). edge and deflect-all add each camera's force (no rounds, no conflicts counted).
+   * A step whose camera count differs from the last successful step's forgets every fragment, as
+   * fragsim_controller_reset does. */
+  const fragsim_camera_pose* camera_poses;
+  int32_t camera_count;
 } fragsim_step_input;
+
+/* Since 0.7. The most rounds edge-min spends settling one fragment's pushes for several cameras:
+ * in each, every camera that still sees a threat on the pushed path adds its least extra push. */
+#define FRAGSIM_CAMERA_ROUNDS 4
 
 /* Since 0.6. The type of the numbers in fragsim_fragment_arrays. */
 typedef enum fragsim_scalar_type {
@@ -421,7 +479,11 @@ typedef struct fragsim_step_stats {
   int32_t first_skipped;
   /* Since 0.5. Fragments that threaten the camera and got no force: mass 0 (cannot be pushed). */
   int32_t unprotected;
-  uint32_t warnings; /* since 0.5: FRAGSIM_WARNING_* bits */
+  uint32_t warnings; /* since 0.5: FRAGSIM_WARNING_* bits (of any camera) */
+  /* Since 0.7, several cameras only: fragments whose pushes did not settle (see camera_count:
+   * one camera's way out leads into another's box), and the index of the first (-1: none). */
+  int32_t conflicts;
+  int32_t first_conflict;
 } fragsim_step_stats;
 
 /* The library's version, FRAGSIM_CONTROL_VERSION of the build (compare with the header's). */
@@ -438,9 +500,14 @@ FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void);
  */
 FRAGSIM_API fragsim_camera fragsim_default_camera(void);
 
+/* Since 0.7. fragsim_default_camera()'s constants, and its pose (at the origin, looking down -z,
+ * still). */
+FRAGSIM_API fragsim_camera_def fragsim_default_camera_def(void);
+FRAGSIM_API fragsim_camera_pose fragsim_default_camera_pose(void);
+
 /* Since 0.5. A step input to start from: time 0, no end (INFINITY), dt 1/60 s, gravity
  * (0, -9.81, 0), no ground (-INFINITY), ground normal (0, 1, 0) (since 0.6),
- * fragsim_default_camera(), no fragments. */
+ * fragsim_default_camera(), no fragments, camera_count 0 and camera_poses NULL (since 0.7). */
 FRAGSIM_API fragsim_step_input fragsim_default_step_input(void);
 
 /* True for the all-zero id (no controller); says nothing of whether a nonzero id is alive. */
@@ -472,6 +539,17 @@ FRAGSIM_API fragsim_status fragsim_controller_reset(fragsim_controller_id contro
  * many (a step with new ids may still grow the hash table of ids it keeps). */
 FRAGSIM_API fragsim_status fragsim_controller_reserve(fragsim_controller_id controller,
                                                       int32_t fragment_count);
+
+/* Since 0.7. Sets the constants of the controller's cameras, camera_count of them in
+ * [1, FRAGSIM_MAX_CAMERAS] (each checked as fragsim_camera's fields are, a failure naming
+ * cameras[i] and the field; the controller then keeps its cameras as they were). Call it once, and
+ * again when a constant changes (a zoom, a new body); steps then pass camera_count poses. The
+ * state kept per fragment survives a change of constants; a change of camera count forgets every
+ * fragment at the next step. Allocates the strategies of cameras it has not had before (from the
+ * def's allocator; FRAGSIM_ERROR_OUT_OF_MEMORY leaves the controller as it was). */
+FRAGSIM_API fragsim_status fragsim_controller_set_cameras(fragsim_controller_id controller,
+                                                          const fragsim_camera_def* cameras,
+                                                          int32_t camera_count);
 
 /* One physics step: writes input->fragment_count forces into forces_N (the caller's array, one
  * per fragment, in the order of input->fragments; zero for most). stats may be NULL.
