@@ -41,6 +41,8 @@ struct Substeps {
   const CameraPath* camera_path = nullptr;
   fragsim_controller_id controller{};  // null id: no controller
   fragsim_step_input input = fragsim_default_step_input();
+  fragsim_camera_def camera_def = fragsim_default_camera_def();     // set once on the controller
+  fragsim_camera_pose camera_pose = fragsim_default_camera_pose();  // what each substep passes
   fragsim_fragment_arrays arrays{};
   std::vector<FragmentRecord> fragments;
   std::vector<Vec3> centre_before_m;  // for the near-plane check
@@ -75,12 +77,16 @@ void before_substep(btDynamicsWorld* world, btScalar substep_s) {
     fragsim_step_input& in = s.input;
     in.time_s = s.time_s;
     in.dt_s = dt_s;
-    in.camera.eye_m = to_fragsim(s.camera_start.eye_m);
-    in.camera.right = to_fragsim(s.camera_start.right);
-    in.camera.up = to_fragsim(s.camera_start.up);
-    in.camera.forward = to_fragsim(s.camera_start.forward);
+    // Only what moves: the constants were set once (fragsim_controller_set_cameras below).
+    fragsim_camera_pose& pose = s.camera_pose;
+    pose.eye_m = to_fragsim(s.camera_start.eye_m);
+    pose.right = to_fragsim(s.camera_start.right);
+    pose.up = to_fragsim(s.camera_start.up);
+    pose.forward = to_fragsim(s.camera_start.forward);
     // The eye's velocity over this substep, from the path (not the rendered frame's pose).
-    in.camera.velocity_mps = to_fragsim((s.camera_end.eye_m - s.camera_start.eye_m) * (1 / dt_s));
+    pose.velocity_mps = to_fragsim((s.camera_end.eye_m - s.camera_start.eye_m) * (1 / dt_s));
+    in.camera_poses = &pose;
+    in.camera_count = 1;
     fragsim_step_stats stats;
     const Clock::time_point call = Clock::now();
     const fragsim_status status =
@@ -133,18 +139,18 @@ void after_substep(btDynamicsWorld* world, btScalar substep_s) {
   s.callbacks_s += seconds_since(started);
 }
 
-// The step input's parts that stay for the run: gravity as Bullet integrates it (a float), the
-// ground, the frustum, and the camera's declared bounds.
-void set_fixed_input(fragsim_step_input& in, const btVector3& gravity) {
+// The step input's parts that stay for the run: gravity as Bullet integrates it (a float) and the
+// ground; and the camera's constants: the frustum and its declared bounds.
+void set_fixed_input(fragsim_step_input& in, fragsim_camera_def& camera, const btVector3& gravity) {
   in.gravity_mps2 = {gravity.x(), gravity.y(), gravity.z()};
   in.ground_height_m = 0;
-  in.camera.fovy_deg = 60;
-  in.camera.aspect = 16.0 / 9.0;
-  in.camera.near_m = 0.1;
-  in.camera.far_m = 500;
-  in.camera.max_speed_mps = CameraBounds::max_speed_mps;
-  in.camera.max_accel_mps2 = CameraBounds::max_accel_mps2;
-  in.camera.max_turn_radps = CameraBounds::max_turn_radps;
+  camera.fovy_deg = 60;
+  camera.aspect = 16.0 / 9.0;
+  camera.near_m = 0.1;
+  camera.far_m = 500;
+  camera.max_speed_mps = CameraBounds::max_speed_mps;
+  camera.max_accel_mps2 = CameraBounds::max_accel_mps2;
+  camera.max_turn_radps = CameraBounds::max_turn_radps;
 }
 
 fragsim_fragment_arrays strided_arrays(std::vector<FragmentRecord>& fragments) {
@@ -192,9 +198,9 @@ RunResult run_blast(const RunSettings& settings) {
     s.fragments[i].id = static_cast<uint64_t>(i);  // stable: Bullet's bodies never change order
   }
   s.arrays = strided_arrays(s.fragments);
-  set_fixed_input(s.input, physics.world().getGravity());
+  set_fixed_input(s.input, s.camera_def, physics.world().getGravity());
   s.near_rectangle =
-      near_rectangle(s.input.camera.near_m, s.input.camera.fovy_deg, s.input.camera.aspect);
+      near_rectangle(s.camera_def.near_m, s.camera_def.fovy_deg, s.camera_def.aspect);
 
   if (settings.protect) {
     const fragsim_controller_def def = fragsim_default_controller_def();
@@ -203,8 +209,10 @@ RunResult run_blast(const RunSettings& settings) {
       result.error = message;
       return result;
     }
-    // Room for the whole blast now, so its first substep (every id new) grows nothing.
-    if (fragsim_controller_reserve(s.controller, n) != FRAGSIM_OK) {
+    // The camera's constants once, and room for the whole blast now, so its first substep (every
+    // id new) grows nothing.
+    if (fragsim_controller_set_cameras(s.controller, &s.camera_def, 1) != FRAGSIM_OK ||
+        fragsim_controller_reserve(s.controller, n) != FRAGSIM_OK) {
       result.error = fragsim_controller_last_error(s.controller);
       fragsim_controller_destroy(s.controller);
       return result;
