@@ -149,7 +149,8 @@ JointPush::Conflicts JointPush::join(std::span<const StepContext> contexts,
       if (rounds && f.mass_kg > 0.0) {
         Eigen::Vector3d accel_mps2 = force_N / f.mass_kg;
         if (!settle(contexts, f, owner_[i], accel_mps2)) {
-          if (conflicts.count++ == 0) conflicts.first = k;
+          ++conflicts.count;
+          if (conflicts.first < 0 || k < conflicts.first) conflicts.first = k;
         }
         const double a = accel_mps2.norm();
         if (a > a_max_mps2_) {

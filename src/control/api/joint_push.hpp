@@ -49,7 +49,7 @@ class JointPush {
 
   struct Conflicts {
     int count = 0;
-    int first = -1;  // a fragment index (the caller's order is the caller's to restore)
+    int first = -1;  // the lowest fragment index among them (-1: none)
   };
   // Joins the cameras' answers (outs[j] for contexts[j], over `fragments`) into `out`, which
   // arrives cleared: forces, candidates and capped (each fragment once), guarded and deferred
