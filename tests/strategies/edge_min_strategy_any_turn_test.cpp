@@ -226,5 +226,41 @@ TEST(EdgeMinAnyTurn, ABoundedTurnNeverHoldsMoreInDoubtThanTheChordAlone) {
   EXPECT_GT(chord_only, 0);
 }
 
+TEST(EdgeMinAnyTurn, WhenTheWorstCaseCannotBeBeatenTheCapGoesTheConstantModelsWay) {
+  // A camera declaring A = 80 m/s^2 > a_max and any turn: close fragments' worst cases need more
+  // than a_max on every way out, so nothing is promised; the capped push then goes where the
+  // constant model pushes (the likeliest camera keeps its velocity and view), at a_max. Random
+  // fragments 0.4-1 m ahead at 8-12 m/s, the camera moving at up to V_c = 3 m/s.
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int beaten = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Eigen::Vector3d cam_v(3.0 * u(rng), 3.0 * u(rng), 0.0);
+    const FragmentState f =
+        fragment({0.15 * u(rng), 0.15 * u(rng), -0.7 + 0.3 * u(rng)},
+                 Eigen::Vector3d(cam_v.x() + u(rng), cam_v.y() + u(rng), 10.0 + 2.0 * u(rng)));
+    const std::array<FragmentState, 1> frags{f};
+    StepContext ctx = context(0.0, kUndeclaredBound, frags, 0.0, 3.0);
+    ctx.camera_velocity_mps = cam_v.cwiseMin(3.0 / std::sqrt(2.0)).cwiseMax(-3.0 / std::sqrt(2.0));
+    ctx.camera_max_speed_mps = 3.0;
+    ctx.camera_max_accel_mps2 = 80.0;
+    EdgeMinStrategy bounded(params());
+    EdgeMinStrategy constant(params(CameraModel::kConstant));
+    StepOutput b;
+    StepOutput c;
+    bounded.step(ctx, b);
+    constant.step(ctx, c);
+    if (b.activity.capped.empty() || c.forces.empty()) continue;
+    ++beaten;
+    ASSERT_EQ(b.forces.size(), 1u);
+    const Eigen::Vector3d fb = b.forces[0].force_N;
+    const Eigen::Vector3d fc = c.forces[0].force_N;
+    // The same way (one of +-right, +-up: parallel unit vectors), at the cap.
+    EXPECT_NEAR(fb.normalized().dot(fc.normalized()), 1.0, 1e-12) << trial;
+    EXPECT_NEAR(fb.norm() / f.mass_kg, kAMax, 1e-9) << trial;
+  }
+  EXPECT_GT(beaten, 20);
+}
+
 }  // namespace
 }  // namespace fragsim

@@ -645,7 +645,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         const std::size_t wc_best = chosen(wc.need, way_weights_, weighted_);
         const double a_wc =
             std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
-        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
+        // When no push within a_max beats the worst case, nothing is promised for this fragment
+        // any more: the capped push then goes the constant model's way out, which saves it from
+        // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
+        const bool beaten = !(a_wc <= params_.a_max_mps2);
+        const std::size_t way = beaten && nominal.threat ? best : wc_best;
+        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[way],
                      f.mass_kg, params_.a_max_mps2);
         return;
       }
