@@ -75,6 +75,9 @@ const std::vector<SuiteMode>& suite_modes() {
       {"path", {{"camera.mode", "path"}}},
       {"player", {{"camera.mode", "player"}}},
       {"player-instant", {{"camera.mode", "player"}, {"camera.player_accel_mps2", "inf"}}},
+      // A mouse flick's turn rate (eight times the scene default): edge-min must not rely on
+      // a slow view.
+      {"player-flick", {{"camera.mode", "player"}, {"camera.turn_rate_degps", "720"}}},
   };
   return modes;
 }

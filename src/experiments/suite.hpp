@@ -44,7 +44,8 @@ struct SuiteMode {
   std::vector<SceneOverride> overrides;
 };
 
-// path, player (the scene's default acceleration), player-instant (player_accel_mps2 = inf).
+// path, player (the scene's default acceleration), player-instant (player_accel_mps2 = inf),
+// player-flick (turn_rate_degps = 720).
 const std::vector<SuiteMode>& suite_modes();
 
 // Whether a mode's runs count as "player runs" for the recommendation.

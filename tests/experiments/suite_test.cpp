@@ -20,8 +20,8 @@ const std::string kSceneDir = std::string(FRAGSIM_DATA_DIR) + "/scenes";
 
 TEST(SuiteBattery, DefaultSeedsGiveAtLeastAThousandRunsOfEveryCombination) {
   const std::vector<SuiteRun> runs = suite_runs({});
-  // 5 scenes x 2 distances x 2 aims x 2 speeds x 3 camera modes x 9 seeds.
-  EXPECT_EQ(runs.size(), 1080u);
+  // 5 scenes x 2 distances x 2 aims x 2 speeds x 4 camera modes x 9 seeds.
+  EXPECT_EQ(runs.size(), 1440u);
   EXPECT_GE(runs.size(), 1000u);
   std::set<std::string> scenes, aims, modes;
   std::set<
@@ -37,7 +37,7 @@ TEST(SuiteBattery, DefaultSeedsGiveAtLeastAThousandRunsOfEveryCombination) {
   EXPECT_EQ(scenes,
             (std::set<std::string>{"front", "thesis125", "thesis1000", "close", "distance"}));
   EXPECT_EQ(aims, (std::set<std::string>{"future", "present"}));
-  EXPECT_EQ(modes, (std::set<std::string>{"path", "player", "player-instant"}));
+  EXPECT_EQ(modes, (std::set<std::string>{"path", "player", "player-instant", "player-flick"}));
   // Seeds 1..9 under every entry and mode, the seed turning fastest.
   for (std::size_t i = 0; i < runs.size(); ++i) EXPECT_EQ(runs[i].seed, i % 9 + 1);
   EXPECT_EQ(runs.front().scene, "front");
@@ -62,10 +62,16 @@ TEST(SuiteBattery, ModesSetTheCameraKeys) {
   k = keys(r);
   EXPECT_EQ(k["camera.mode"], "player");
   EXPECT_EQ(k.count("camera.player_accel_mps2"), 0u);  // the scene's default acceleration
+  r.mode = "player-flick";
+  k = keys(r);
+  EXPECT_EQ(k["camera.mode"], "player");
+  EXPECT_EQ(k["camera.turn_rate_degps"], "720");
+  EXPECT_EQ(k.count("camera.player_accel_mps2"), 0u);
   r.mode = "path";
   EXPECT_EQ(keys(r)["camera.mode"], "path");
   EXPECT_TRUE(is_player_mode("player"));
   EXPECT_TRUE(is_player_mode("player-instant"));
+  EXPECT_TRUE(is_player_mode("player-flick"));
   EXPECT_FALSE(is_player_mode("path"));
 }
 
@@ -312,7 +318,7 @@ TEST(SuiteCommand, HelpListsTheOptions) {
   const test::Result r = test::run_fragsim("suite --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("--seeds"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("1080 runs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("1440 runs"), std::string::npos) << r.out;
 }
 
 }  // namespace

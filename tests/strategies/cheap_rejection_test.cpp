@@ -554,7 +554,8 @@ TEST(TwoBoxRejection, HandCasesForTheGrownBox) {
   TwoBoxClearance c;
   TwoBoxClearance::Boxes b = still_boxes();
   b.grown = true;
-  b.grow_m = 0.1;
+  b.grow_lo_m = Eigen::Vector3d::Constant(0.1);
+  b.grow_hi_m = Eigen::Vector3d::Constant(0.1);
   b.window_s = 0.2;
   c.run(std::vector<FragmentState>{state_at({0.45, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
                                    state_at({0.35, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
@@ -571,6 +572,21 @@ TEST(TwoBoxRejection, HandCasesForTheGrownBox) {
   EXPECT_EQ(c.grown_clears()[3], 1);
   EXPECT_EQ(std::vector<std::int32_t>(c.unsettled().begin(), c.unsettled().end()),
             (std::vector<std::int32_t>{1, 2, 3}));
+}
+
+TEST(TwoBoxRejection, EachSideOfTheGrownBoxGrowsByItsOwn) {
+  // x grown by 0.1 m above (face at 0.4 m) and not at all below (face at -0.3 m): a fragment at
+  // rest 0.35 m out on the +x side is inside the grown box, its mirror image on -x clear of it.
+  TwoBoxClearance c;
+  TwoBoxClearance::Boxes b = still_boxes();
+  b.grown = true;
+  b.grow_hi_m = {0.1, 0.0, 0.0};
+  b.window_s = 0.2;
+  c.run(std::vector<FragmentState>{state_at({0.35, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0),
+                                   state_at({-0.35, 0.0, 0.0}, Eigen::Vector3d::Zero(), 0.0)},
+        b);
+  EXPECT_EQ(c.grown_clears()[0], 0);
+  EXPECT_EQ(c.grown_clears()[1], 1);
 }
 
 TEST(TwoBoxRejection, APathIsExaminedUntilItReachesTheGround) {
@@ -624,7 +640,11 @@ TwoBoxCase random_two_box_case(std::mt19937_64& rng, std::size_t n, bool still_g
   b.half_gy_mps2 = 0.5 * kG.y();
   b.grown = true;
   b.grown_velocity_mps = still_grown ? Eigen::Vector3d::Zero() : b.frame.velocity_mps;
-  b.grow_m = 0.5 * u(rng);
+  // Each side its own growth (edge-min's sides stop growing at different times).
+  for (int c = 0; c < 3; ++c) {
+    b.grow_lo_m[c] = 0.5 * u(rng);
+    b.grow_hi_m[c] = 0.5 * u(rng);
+  }
   b.window_s = t_end * u(rng);
   const auto to_frame = [&](const Eigen::Vector3d& w) {
     return Eigen::Vector3d(w.dot(k.right), w.dot(k.up), w.dot(k.forward));
@@ -658,7 +678,6 @@ TEST(TwoBoxRejection, NeverClearsAPathThatEntersEitherBoxWithinItsOwnLookAhead) 
     TwoBoxClearance c;
     c.run(k.fragments, k.boxes);
     const TwoBoxClearance::Boxes& b = k.boxes;
-    const Eigen::Vector3d grow = Eigen::Vector3d::Constant(b.grow_m);
     for (std::size_t i = 0; i < k.fragments.size(); ++i) {
       const FragmentState& f = k.fragments[i];
       const Eigen::Vector3d r = Eigen::Vector3d::Constant(f.radius_m);
@@ -670,8 +689,8 @@ TEST(TwoBoxRejection, NeverClearsAPathThatEntersEitherBoxWithinItsOwnLookAhead) 
       }
       if (c.grown_clears()[i]) {
         ++grown_cleared;
-        ASSERT_FALSE(enters_box(k.local_grown[i], b.lo_m - grow - r, b.hi_m + grow + r,
-                                std::min(b.window_s, own)))
+        ASSERT_FALSE(enters_box(k.local_grown[i], b.lo_m - b.grow_lo_m - r,
+                                b.hi_m + b.grow_hi_m + r, std::min(b.window_s, own)))
             << round << " " << i;
       }
     }

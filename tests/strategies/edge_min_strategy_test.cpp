@@ -60,12 +60,22 @@ TEST(EdgeMinStrategy, FragmentAtTheLensIsPushedUpJustEnoughAndMisses) {
 TEST(EdgeMinStrategy, BoundedAccelPushesTheFragmentAtTheLensFurtherButBoundedly) {
   // The default camera model guards against a camera accelerating at up to 20 m/s^2 toward the
   // fragment; its guard engages about 0.13 s before the box (docs/camera_models.md), by when
-  // such a camera could have closed 0.5 * 20 * 0.13^2 = 0.17 m. So the fragment passes higher
-  // than the constant model's 0.2366 m, but by less than that.
-  const Outcome o = run(test::single_fragment({0.03, 1.62, -10.0}), "edge-min");
-  EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
-  EXPECT_GT(height_at_eye(o.rec), 0.15 + 0.0866);
-  EXPECT_LT(height_at_eye(o.rec), 0.15 + 0.0866 + 0.17);
+  // such a camera could have closed 0.5 * 20 * 0.13^2 = 0.17 m. With a 90 degrees/s turn bound
+  // the turn adds a few cm by then and the fragment passes higher than the constant model's
+  // 0.2366 m, but by less than 0.17 m.
+  Scene scene = test::single_fragment({0.03, 1.62, -10.0});
+  scene.strategies.edge_min.camera_turn_degps = 90.0;
+  const Outcome bounded_turn = run(scene, "edge-min");
+  EXPECT_EQ(bounded_turn.summary.intersections.camera_hit_fragments, 0);
+  EXPECT_GT(height_at_eye(bounded_turn.rec), 0.15 + 0.0866);
+  EXPECT_LT(height_at_eye(bounded_turn.rec), 0.15 + 0.0866 + 0.17);
+  // Without a turn bound (the default) any orientation may come at once: the top side may also
+  // reach as far as the box's farthest corner, |(0.2, 0.15, 0.2)| = 0.32 m from the eye, which
+  // is 0.17 m more (docs/camera_models.md section 2). Higher still, by less than both together.
+  const Outcome any_turn = run(test::single_fragment({0.03, 1.62, -10.0}), "edge-min");
+  EXPECT_EQ(any_turn.summary.intersections.camera_hit_fragments, 0);
+  EXPECT_GT(height_at_eye(any_turn.rec), height_at_eye(bounded_turn.rec));
+  EXPECT_LT(height_at_eye(any_turn.rec), 0.15 + 0.0866 + 0.17 + 0.17);
 }
 
 TEST(EdgeMinStrategy, PushFadesOnceTheFragmentIsClear) {

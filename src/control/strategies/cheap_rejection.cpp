@@ -870,9 +870,8 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   max_radius_m_ = 0.0;
   if (n == 0) return;
   const BoxFrame& frame = boxes.frame;
-  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(boxes.grow_m);
-  const Eigen::Vector3d grown_lo = boxes.lo_m - grow;
-  const Eigen::Vector3d grown_hi = boxes.hi_m + grow;
+  const Eigen::Vector3d grown_lo = boxes.lo_m - boxes.grow_lo_m;
+  const Eigen::Vector3d grown_hi = boxes.hi_m + boxes.grow_hi_m;
   const double k = inverse_sigma_bound(frame.axes);
   FirstTier p;
   for (int c = 0; c < 3; ++c) {

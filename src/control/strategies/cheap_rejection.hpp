@@ -146,11 +146,13 @@ class TwoBoxClearance {
     double floor_s = 0.0;
     double ground_m = 0.0;      // -infinity: no ground
     double half_gy_mps2 = 0.0;  // half the world acceleration's y (the ground's normal)
-    // The grown box: the protected box grown by grow_m on every side, seen from a frame with the
-    // protected box's origin and axes but velocity grown_velocity_mps, over at most window_s.
+    // The grown box: the protected box grown by grow_lo_m below lo and grow_hi_m above hi (per
+    // axis, each >= 0), seen from a frame with the protected box's origin and axes but velocity
+    // grown_velocity_mps, over at most window_s.
     bool grown = false;
     Eigen::Vector3d grown_velocity_mps = Eigen::Vector3d::Zero();
-    double grow_m = 0.0;
+    Eigen::Vector3d grow_lo_m = Eigen::Vector3d::Zero();
+    Eigen::Vector3d grow_hi_m = Eigen::Vector3d::Zero();
     double window_s = 0.0;
   };
   void run(std::span<const FragmentState> fragments, const Boxes& boxes);

@@ -53,8 +53,9 @@ std::optional<std::string> edge_weights_rule(const std::array<double, 4>& w) {
 const ParamSpec<EdgeMinParams>& edge_min_param_spec() {
   using namespace settings;
   using P = EdgeMinParams;
-  // The assumed camera bounds stand in for a scene that declares none: they must be numbers to
-  // reason with (a camera that turns or accelerates without bound is `reachable`'s case).
+  // The assumed camera bounds stand in for a scene that declares none: the acceleration must be
+  // a number to reason with (a camera that accelerates without bound is `reachable`'s case); the
+  // turn rate may be inf, as every orientation is bounded by the ball around the eye.
   static const ParamSpec<P> spec{
       {real("margin_m", "m", "clearance kept beyond the protected rectangle's edge", &P::margin_m,
             closed(0, 100)),
@@ -72,10 +73,10 @@ const ParamSpec<EdgeMinParams>& edge_min_param_spec() {
             "bounded_accel: the camera's acceleration bound assumed when the scene declares "
             "none (mode = path or track)",
             &P::camera_accel_mps2, closed(0, 1e6)),
-       real("camera_turn_degps", "degrees/s",
-            "bounded_accel and reachable: the camera's turn-rate bound assumed when the scene "
-            "declares none",
-            &P::camera_turn_degps, closed(0, 1e6)),
+       real_or_inf("camera_turn_degps", "degrees/s",
+                   "bounded_accel and reachable: the camera's turn-rate bound assumed when the "
+                   "scene declares none; inf: no bound (every orientation at once)",
+                   &P::camera_turn_degps, closed(0, 1e6)),
        real("horizon_cap_s", "s",
             "look-ahead cap: a path is examined until the fragment reaches the ground, at most "
             "this far ahead",

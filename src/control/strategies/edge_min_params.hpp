@@ -2,6 +2,7 @@
 // `edge-min`'s parameters (docs/method.md section 4) and their scene keys ([edge-min]).
 
 #include <array>
+#include <limits>
 
 #include "strategies/param_spec.hpp"
 
@@ -23,7 +24,9 @@ struct EdgeMinParams {
   // The bounds assumed when the scene declares none (camera.mode = path or track); a scene that
   // declares its bounds (camera.mode = player) is taken at its word.
   double camera_accel_mps2 = 20.0;
-  double camera_turn_degps = 90.0;
+  // inf (the default): no turn bound; each side of the protected box then reaches at once as far
+  // as the ball every orientation of it lies in, grown by the translation (docs/camera_models.md).
+  double camera_turn_degps = std::numeric_limits<double>::infinity();
   // How far ahead a path is examined: until the fragment reaches the ground (its centre at the
   // ground height plus its radius, going down: the ballistic path means nothing after it
   // bounces), never beyond this cap (a path that never comes down: gravity off, no ground).

@@ -139,24 +139,57 @@ struct Slabs {
   std::array<double, 3> hi{};
 };
 
-// rho(t) = q1 t + q2 t^2 + rot_m min(turn t, 2): how far the protected box can be, t after now,
-// from where a constraint's centre puts it. A point rot_m from the eye moves by a chord of at
-// most rot_m min(angle, 2) when the view turns by `angle`; the translation part is the
-// constraint's own (0.5 A t^2 about the constant-velocity path, V_c t about the eye now).
+// rho(t) on one side of the protected box: how far that side can be, t after now, beyond where a
+// constraint's centre puts it. The translation part is the constraint's own (0.5 A t^2 about the
+// constant-velocity path, V_c t about the eye now); the turn part is the least of two bounds on
+// how far a turn of the view moves that side:
+// - the chord: a point rot_m from the eye moves by at most rot_m min(angle, 2) when the view
+//   turns by `angle` (at most turn t);
+// - the ball: every orientation of the box lies within rot_m of the eye (its farthest corner),
+//   so no side reaches past rot_m, which is rot_m - half beyond a side `half` from the eye,
+//   whatever the turn rate (docs/camera_models.md, section 2).
+// Both are capped growths, so the turn part is rot_m min(turn t, cap / rot_m) with the side's
+// cap = min(2 rot_m, rot_m - half) = rot_m - half: linear up to the side's knee, flat after it.
 struct Inflation {
   double q1_mps = 0.0;
   double q2_mps2 = 0.0;
   double rot_m = 0.0;
   double turn_radps = 0.0;
-  // Where the chord stops growing (2 / turn); 0 for an instant turn, +inf without turning.
-  double knee_s() const { return turn_radps > 0.0 ? 2.0 / turn_radps : kInf; }
-  // rho as a quadratic on one side of the knee.
-  Coord piece(bool after_knee) const {
-    if (after_knee) return {2.0 * rot_m, q1_mps, q2_mps2};
+  // The most the turn adds to each side: lo x, lo y, lo z, hi x, hi y, hi z (turn_side()).
+  std::array<double, 6> turn_cap_m{};
+  static std::size_t turn_side(int k, int sign) {
+    return static_cast<std::size_t>(k + (sign > 0 ? 3 : 0));
+  }
+  double cap_m(int k, int sign) const { return turn_cap_m[turn_side(k, sign)]; }
+  // Where a side's turn part stops growing (cap / (rot_m turn)); 0 for an instant turn or a side
+  // the turn cannot move out, +inf without turning.
+  static double knee_s(double cap_m, double rot_m, double turn_radps) {
+    if (!(cap_m > 0.0)) return 0.0;
+    if (!(turn_radps > 0.0)) return kInf;
+    return cap_m / (rot_m * turn_radps);
+  }
+  double knee_s(double cap_m) const { return knee_s(cap_m, rot_m, turn_radps); }
+  // One side's rho as a quadratic on one side of its knee.
+  Coord piece(double cap_m, bool after_knee) const {
+    if (after_knee) return {cap_m, q1_mps, q2_mps2};
     return {0.0, q1_mps + rot_m * turn_radps, q2_mps2};
   }
-  double at(double t) const { return piece(t >= knee_s()).at(t); }
+  double at(double t, double cap_m) const { return piece(cap_m, t >= knee_s(cap_m)).at(t); }
 };
+
+// The turn caps of a box lo <= x <= hi about the eye (lo <= 0 <= hi) whose farthest corner is
+// rot_m away: per side, the chord's cap 2 rot_m or the ball's rot_m - |side|, the smaller.
+std::array<double, 6> turn_caps_m(const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
+                                  double rot_m) {
+  std::array<double, 6> cap{};
+  for (int k = 0; k < 3; ++k) {
+    for (const int sign : {-1, +1}) {
+      const double side_m = sign > 0 ? hi_m[k] : -lo_m[k];
+      cap[Inflation::turn_side(k, sign)] = std::max(0.0, std::min(2.0 * rot_m, rot_m - side_m));
+    }
+  }
+  return cap;
+}
 
 // One region the camera is certain to stay in: the fragment's camera-axis coordinates relative to
 // the region's centre, and how far the protected box can stray from there.
@@ -165,19 +198,34 @@ struct Constraint {
   Inflation rho;
 };
 
-// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab.
+// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab. Each
+// side has its own knee: between the knees both bounds are single quadratics.
 Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double t_end) {
   const Coord& c = con.axis[static_cast<std::size_t>(k)];
   const double lo = slabs.lo[static_cast<std::size_t>(k)];
   const double hi = slabs.hi[static_cast<std::size_t>(k)];
-  const auto piece = [&](bool after, double t0, double t1) {
-    const Coord r = con.rho.piece(after);
-    return within(c, Coord{lo - r.c0, -r.c1, -r.c2}, Coord{hi + r.c0, r.c1, r.c2}, t0, t1);
+  const double cap_lo_m = con.rho.cap_m(k, -1);
+  const double cap_hi_m = con.rho.cap_m(k, +1);
+  const double knee_lo_s = con.rho.knee_s(cap_lo_m);
+  const double knee_hi_s = con.rho.knee_s(cap_hi_m);
+  const auto piece = [&](double t0, double t1) {
+    // Which side of each knee: the piece lies wholly on one side (the knees are its ends).
+    const double m = 0.5 * (t0 + t1);
+    const Coord r_lo = con.rho.piece(cap_lo_m, m >= knee_lo_s);
+    const Coord r_hi = con.rho.piece(cap_hi_m, m >= knee_hi_s);
+    return within(c, Coord{lo - r_lo.c0, -r_lo.c1, -r_lo.c2}, Coord{hi + r_hi.c0, r_hi.c1, r_hi.c2},
+                  t0, t1);
   };
-  const double knee = con.rho.knee_s();
-  if (knee >= t_end) return piece(false, 0.0, t_end);
-  if (knee <= 0.0) return piece(true, 0.0, t_end);
-  return unite_in_order(piece(false, 0.0, knee), piece(true, knee, t_end));
+  const std::array<double, 4> cut{0.0, std::clamp(std::min(knee_lo_s, knee_hi_s), 0.0, t_end),
+                                  std::clamp(std::max(knee_lo_s, knee_hi_s), 0.0, t_end), t_end};
+  Intervals out;
+  bool any = false;
+  for (std::size_t p = 0; p + 1 < cut.size(); ++p) {
+    if (!(cut[p + 1] > cut[p])) continue;  // a knee at an end of [0, t_end] or both at one time
+    out = any ? unite_in_order(out, piece(cut[p], cut[p + 1])) : piece(cut[p], cut[p + 1]);
+    any = true;
+  }
+  return any ? out : piece(0.0, t_end);  // t_end = 0: the one instant
 }
 
 // The worst case's threat and its least pushes along +up, -up, +right, -right (the order of
@@ -199,8 +247,8 @@ double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m,
       const double t = a + (b - a) * s / 8.0;
       double gap = kInf;
       for (const Constraint& con : cons) {
-        gap = std::min(gap,
-                       edge_m + con.rho.at(t) - sign * con.axis[static_cast<std::size_t>(k)].at(t));
+        gap = std::min(gap, edge_m + con.rho.at(t, con.rho.cap_m(k, sign)) -
+                                sign * con.axis[static_cast<std::size_t>(k)].at(t));
       }
       if (!(gap > 0.0)) continue;
       const double per_accel = EdgeMinStrategy::displacement_per_accel(t - delay_s, dt);
@@ -237,18 +285,19 @@ WorstCase worst_case(std::span<const Constraint> cons, const Slabs& slabs, doubl
 // The latest time-to-threat at which a robust model may still have to act: beyond it, a push of
 // a_max started one step later covers the half-width plus the fragment's radius plus rho(t),
 // the most the nearer side of the grown box can be away from a fragment inside it. The root of
-// a_max D(t - dt) = h + r + rho(t) with rho's two upper bounds (its linear chord part and its cap
-// 2 rot_m), the smaller of the two, plus a step (a threat first inside this window was safe to
-// wait on a step ago); the whole horizon when a_max does not outgrow 2 q2 (no guarantee then).
-double look_ahead_s(const Inflation& rho, double half_m, double a_max_mps2, double dt,
-                    double horizon_s) {
+// a_max D(t - dt) = h + r + rho(t) with rho's two upper bounds on the narrower axis's sides (its
+// linear chord part and its cap, `turn_cap_m`), the smaller of the two, plus a step (a threat
+// first inside this window was safe to wait on a step ago); the whole horizon when a_max does not
+// outgrow 2 q2 (no guarantee then).
+double look_ahead_s(const Inflation& rho, double half_m, double turn_cap_m, double a_max_mps2,
+                    double dt, double horizon_s) {
   const double a = 0.5 * a_max_mps2 - rho.q2_mps2;
   if (!(a > 0.0)) return horizon_s;
   const auto root = [a](double b, double c) {
     return (b + std::sqrt(b * b + 4.0 * a * c)) / (2 * a);
   };
   const double b = 0.5 * a_max_mps2 * dt + rho.q1_mps;
-  double t = root(b, half_m + 2.0 * rho.rot_m);
+  double t = root(b, half_m + turn_cap_m);
   if (std::isfinite(rho.turn_radps)) t = std::min(t, root(b + rho.rot_m * rho.turn_radps, half_m));
   return std::isfinite(t) ? std::min(t + dt, horizon_s) : horizon_s;
 }
@@ -397,10 +446,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const Eigen::Vector3d hi_m(half_w_m, half_h_m, front_m);
 
   // The robust models' regions (see the header): about the constant-velocity path (bounded_accel)
-  // and about the eye now (V_c; both models). Each grows by the chord of the view's turn.
+  // and about the eye now (V_c; both models). Each side grows by the chord of the view's turn, at
+  // most to the ball every orientation of the box lies in (Inflation), so any turn rate is safe.
   const bool robust = params_.camera_model != CameraModel::kConstant;
   const double rot_m = Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)).norm();
   const double turn_radps = assumed_turn_radps(ctx);
+  const std::array<double, 6> turn_cap_m = turn_caps_m(lo_m, hi_m, rot_m);
   const bool ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
   // Neither bound known (a library caller may pass V_c = inf): assume the parameters' bound.
   const double accel_mps2 = std::isfinite(assumed_accel_mps2(ctx)) || ball_known
@@ -411,14 +462,19 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       (params_.camera_model == CameraModel::kBoundedAccel && std::isfinite(accel_mps2)) ||
       !ball_known;
   const Inflation accel_rho{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0, rot_m,
-                            turn_radps};
-  const Inflation ball_rho{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps};
+                            turn_radps, turn_cap_m};
+  const Inflation ball_rho{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps,
+                           turn_cap_m};
   // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
   // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
   const Inflation& reject_rho = use_accel ? accel_rho : ball_rho;
+  // The narrower screen axis and its sides' turn cap (both sides of x or y have the same one).
+  const int narrow_axis = half_w_m <= half_h_m ? 0 : 1;
   const double half_min_m = std::min(half_w_m, half_h_m);
+  const double narrow_cap_m = turn_cap_m[Inflation::turn_side(narrow_axis, +1)];
   const auto look_for = [&](double r_max_m) {
-    return look_ahead_s(reject_rho, half_min_m + r_max_m, params_.a_max_mps2, ctx.dt_s, horizon_s);
+    return look_ahead_s(reject_rho, half_min_m + r_max_m, narrow_cap_m, params_.a_max_mps2,
+                        ctx.dt_s, horizon_s);
   };
 
   // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
@@ -445,7 +501,11 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   double r_hint_m = r_max_hint_m_;
   const auto set_window = [&](double r_max_m) {
     boxes.window_s = look_for(r_max_m);
-    boxes.grow_m = reject_rho.at(boxes.window_s);
+    // Each side's growth only increases with time: its value at the window's end bounds it.
+    for (int k = 0; k < 3; ++k) {
+      boxes.grow_lo_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, -1));
+      boxes.grow_hi_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, +1));
+    }
   };
   if (boxes.grown) {
     if (!(r_hint_m >= 0.0)) {
@@ -585,7 +645,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         const std::size_t wc_best = chosen(wc.need, way_weights_, weighted_);
         const double a_wc =
             std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
-        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[wc_best],
+        // When no push within a_max beats the worst case, nothing is promised for this fragment
+        // any more: the capped push then goes the constant model's way out, which saves it from
+        // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
+        const bool beaten = !(a_wc <= params_.a_max_mps2);
+        const std::size_t way = beaten && nominal.threat ? best : wc_best;
+        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[way],
                      f.mass_kg, params_.a_max_mps2);
         return;
       }

@@ -17,9 +17,11 @@
 // docs/camera_models.md):
 // - constant: it keeps its present velocity and orientation; the push above, nothing more.
 // - bounded_accel: its velocity changes by at most A per second and its view turns at most w per
-//   second, and it never moves faster than V_c. The protected box can then be anywhere within
-//   rho(t) of where the constant model puts it (or of where it is now, for V_c), so each axis of
-//   the box is grown by rho(t), a quadratic in t on each side of the turn's knee.
+//   second (w = inf by default: any turn), and it never moves faster than V_c. The protected box
+//   can then be anywhere within rho(t) of where the constant model puts it (or of where it is
+//   now, for V_c), so each side of the box is grown by its own rho(t): the translation part plus
+//   the turn's chord, the chord never past the ball of the box's farthest corner (any
+//   orientation lies in it), a quadratic in t on each side of that side's knee.
 // - reachable: it may be anywhere within V_c t of where it is (any acceleration) and turn at w.
 // Both robust models push lazily: the constant model's push while a push of at most a_max that
 // starts one step later would still clear the grown box, the grown box's least push (at least

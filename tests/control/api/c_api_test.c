@@ -106,6 +106,34 @@ static void camera_bounds_have_one_meaning_each(void) {
   fragsim_controller_destroy(c);
 }
 
+/* edge_min.camera_turn_degps: INFINITY (since 0.6 the default) means no turn bound and is
+ * accepted; the aimed fragment is pushed under it as under 90 degrees a second. NaN and negatives
+ * are refused, naming the field. */
+static void turn_bound_may_be_infinite(void) {
+  const double ok[] = {INFINITY, 90.0, 0.0};
+  const double bad[] = {-1.0, NAN, -INFINITY};
+  fragsim_fragment f = aimed(1, 0.0);
+  fragsim_vec3 force;
+  fragsim_step_input in = fragsim_default_step_input();
+  fragsim_controller_def def = fragsim_default_controller_def();
+  fragsim_controller_id c;
+  size_t k;
+  CHECK(isinf(def.edge_min.camera_turn_degps) && def.edge_min.camera_turn_degps > 0);
+  in.fragments = &f;
+  in.fragment_count = 1;
+  for (k = 0; k < sizeof ok / sizeof ok[0]; ++k) {
+    def.edge_min.camera_turn_degps = ok[k];
+    CHECK(fragsim_controller_create(&def, &c, NULL, 0) == FRAGSIM_OK);
+    CHECK(fragsim_controller_step(c, &in, &force, NULL) == FRAGSIM_OK);
+    CHECK(force.x != 0.0 || force.y != 0.0 || force.z != 0.0);
+    fragsim_controller_destroy(c);
+  }
+  for (k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+    def.edge_min.camera_turn_degps = bad[k];
+    CHECK(fragsim_controller_create(&def, &c, NULL, 0) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  }
+}
+
 /* Box2D-style ids: a destroyed controller's id is refused with a status (also destroying twice),
  * and a new controller in the same slot does not answer to the old id. */
 static void stale_ids_are_refused(void) {
@@ -273,6 +301,7 @@ int main(void) {
   default_step_input_is_usable();
   zero_initialised_input_is_refused();
   camera_bounds_have_one_meaning_each();
+  turn_bound_may_be_infinite();
   stale_ids_are_refused();
   bad_fragments_are_skipped_and_counted();
   massless_threats_are_counted_unprotected();

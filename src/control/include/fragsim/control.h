@@ -195,8 +195,12 @@ typedef struct fragsim_edge_min_def {
   /* Camera acceleration assumed when the camera declares no bound (max_accel_mps2 = 0), for the
    * bounded-acceleration model. Larger: more fragments pushed. Default 20. */
   double camera_accel_mps2;
-  /* Turn rate assumed when the camera declares none (max_turn_radps = 0), for the robust models.
-   * Larger: more fragments pushed. Default 90. */
+  /* Turn rate assumed when the camera declares none (max_turn_radps = FRAGSIM_UNDECLARED), for
+   * the robust models; INFINITY or a number in [0, 1e6]. INFINITY: no bound, safe against any
+   * turn (mouse flicks): each side of the protected region reaches at once as far as any
+   * orientation of it can, the distance of its farthest corner from the eye. A finite bound
+   * gives a region never larger than that. Larger: more fragments pushed. Default INFINITY
+   * (since 0.7; 90 before, which a game keeps by setting 90). */
   double camera_turn_degps;
   /* Per-step budget: at most this many fragments that survive the cheap rejection are solved
    * exactly per call, the soonest to arrive first (distance to the eye over closing speed); the
@@ -307,7 +311,8 @@ typedef struct fragsim_camera {
    * where the game declares none (edge-min's robust models then assume the def's
    * camera_accel_mps2 and camera_turn_degps); INFINITY where there is none (a player who changes
    * velocity at once: the bounded model then keeps only the ball V_c t, the reachable model's
-   * region); else the bound, >= 0 (0: cannot accelerate, cannot turn). Radians per second for
+   * region; a view that turns at once: every orientation, as camera_turn_degps = INFINITY);
+   * else the bound, >= 0 (0: cannot accelerate, cannot turn). Radians per second for
    * the turn: a value above 60 (3,400 degrees a second) is likely degrees and sets
    * FRAGSIM_WARNING_TURN_IN_DEGREES. NaN and other negatives are refused. */
   double max_accel_mps2;
