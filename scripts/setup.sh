@@ -13,6 +13,11 @@ packages=(cmake g++ make pkg-config libode-dev libbullet-dev libeigen3-dev
           voro++-dev libqhull-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
           libsdl2-dev xvfb xdotool x11-apps python3)
 scripts/install_packages.sh "${packages[@]}"
+# node and npm for the glTF validator (the Bake.ValidatorFindsNoError test): Debian's, unless a
+# node is already there (another distribution's nodejs package would conflict).
+if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+  scripts/install_packages.sh nodejs npm
+fi
 
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j"$(nproc)" "${target[@]}"

@@ -1,10 +1,14 @@
 // fragsim: the command line. It parses options into a scene, runs, prints; every failure becomes
 // one line on stderr and a non-zero exit (2 for usage errors, 1 for failures while running).
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <csignal>
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +22,7 @@
 #include "cli/report_table.hpp"
 #include "cli/suite_command.hpp"
 #include "cli/sweep_command.hpp"
+#include "cli/table.hpp"
 #include "experiments/control_dump.hpp"
 #include "experiments/evaluation.hpp"
 #include "experiments/process_runner.hpp"
@@ -25,6 +30,7 @@
 #include "io/input_error.hpp"
 #include "metrics/trajectory_writer.hpp"
 #include "report/csv_export.hpp"
+#include "report/gltf_bake.hpp"
 #include "report/html_report.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
@@ -61,9 +67,100 @@ void add_output_options(po::options_description& own) {
       "force", "overwrite the files of an existing, non-empty DIR")(
       "no-occlusion", "skip the screen-occlusion raster (faster; occlusion columns read 0)")(
       "jobs", po::value<std::string>()->value_name("J"),
-      "worker processes for the strategies (default: one per core; --trajectories, --sheet or "
-      "--report run in one)");
+      "worker processes for the strategies (default: one per core; --trajectories, --sheet, "
+      "--report or --bake run in one)")(
+      "bake", po::value<std::string>()->value_name("FILE.glb"),
+      "write the run as an animated glTF 2.0 binary: a node per piece with its mesh, the camera, "
+      "the ground, poses at every step (several strategies: FILE.<strategy>.glb each)")(
+      "bake-max-mb", po::value<std::string>()->value_name("MB"),
+      "refuse a bake file larger than MB megabytes (default 256)");
   cli::add_sheet_options(own);
+}
+
+// --bake FILE.glb: the recorder and one file per strategy, opened before the run so that a path
+// that cannot be written fails at once; nothing appears unless every bake fits the limit.
+struct BakeRequest {
+  std::vector<std::string> paths;  // in `names` order
+  std::vector<std::unique_ptr<AtomicFile>> files;
+  std::size_t limit_bytes = 0;
+  GltfBakeRecorder recorder;
+};
+
+std::unique_ptr<BakeRequest> bake_request(const cli::ParsedCommand& p,
+                                          const std::vector<std::string>& names) {
+  if (!p.options.count("bake")) {
+    if (p.options.count("bake-max-mb")) throw UsageError("--bake-max-mb: needs --bake FILE.glb");
+    return nullptr;
+  }
+  auto bake = std::make_unique<BakeRequest>();
+  double limit_mb = kDefaultBakeLimit_MB;
+  if (p.options.count("bake-max-mb")) {
+    const std::string text = p.options["bake-max-mb"].as<std::string>();
+    std::size_t used = 0;
+    try {
+      limit_mb = std::stod(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(limit_mb) || limit_mb <= 0) {
+      throw UsageError("--bake-max-mb: expected a positive number of megabytes, got '" + text +
+                       "'");
+    }
+  }
+  bake->limit_bytes = static_cast<std::size_t>(std::min(limit_mb, 4000.0) * 1e6);
+  const std::string path = p.options["bake"].as<std::string>();
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".glb") throw UsageError("--bake " + path + ": expected a file name ending in .glb");
+  const std::size_t least = bake_animation_bytes(p.scene.fragment_count(), p.scene.step_count(), 1);
+  if (least > bake->limit_bytes) {
+    throw UsageError("--bake: " + std::to_string(p.scene.fragment_count()) + " fragments over " +
+                     std::to_string(p.scene.step_count() + 1) + " samples take at least " +
+                     cli::fixed(static_cast<double>(least) / 1e6, 3) + " MB, over the limit of " +
+                     cli::fixed(limit_mb, 3) + " MB (--bake-max-mb)");
+  }
+  for (const std::string& name : names) {
+    const std::string file = bake_file_path(path, name, names.size() > 1);
+    if (std::find(bake->paths.begin(), bake->paths.end(), file) != bake->paths.end()) {
+      throw UsageError("--bake: strategy '" + name + "' named twice");
+    }
+    std::error_code ec;
+    if (std::filesystem::exists(file, ec) && !p.options.count("force")) {
+      throw UsageError("--bake " + file + ": exists (use --force to overwrite)");
+    }
+    try {
+      bake->files.push_back(std::make_unique<AtomicFile>(file));
+    } catch (const std::runtime_error& e) {
+      throw UsageError(std::string("--bake ") + e.what());
+    }
+    bake->paths.push_back(file);
+  }
+  return bake;
+}
+
+// Writes each strategy's bake, or none if one is over the limit.
+void write_bakes(BakeRequest& bake, const std::vector<std::string>& names) {
+  std::vector<const std::string*> bytes;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto& baked = bake.recorder.baked();
+    const auto it = std::find_if(baked.begin(), baked.end(),
+                                 [&](const auto& b) { return b.strategy == names[i]; });
+    if (it == baked.end()) throw std::runtime_error("--bake: no run of " + names[i] + " recorded");
+    if (it->bytes.size() > bake.limit_bytes) {
+      throw UsageError("--bake " + bake.paths[i] + ": " +
+                       cli::fixed(static_cast<double>(it->bytes.size()) / 1e6, 3) +
+                       " MB, over the limit of " +
+                       cli::fixed(static_cast<double>(bake.limit_bytes) / 1e6, 3) +
+                       " MB (--bake-max-mb); nothing written");
+    }
+    bytes.push_back(&it->bytes);
+  }
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    bake.files[i]->out() << *bytes[i];
+    bake.files[i]->commit();
+    std::cout << "wrote " << bake.paths[i] << " ("
+              << cli::fixed(static_cast<double>(bytes[i]->size()) / 1e6, 1) << " MB)\n";
+  }
 }
 
 // Runs `names` and prints the report; writes the CSV files when asked.
@@ -115,11 +212,14 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   }
   std::optional<FrameRecorder> recorder;
   if (sheet || report_dir) recorder.emplace(recorded_steps);
+  const std::unique_ptr<BakeRequest> bake = bake_request(p, names);
   cli::ObserverFanOut extra;
   extra.add(traj ? &*traj : nullptr);
   extra.add(recorder ? &*recorder : nullptr);
+  extra.add(bake ? &bake->recorder : nullptr);
   const std::vector<Evaluation> runs = compare(p.scene, names, occlusion, extra.or_null(), jobs);
   cli::print_report(p.scene, runs, std::cout);
+  if (bake) write_bakes(*bake, names);
   if (sheet) cli::write_sheet(*sheet, p.scene, *recorder, names, std::cout);
   if (report_dir) {
     const std::vector<std::string> written =
@@ -139,7 +239,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
 
 // `run --dump-control FILE`: the strategy alone (no reference run, no metrics output), recorded.
 int dump_control(const cli::ParsedCommand& p, const std::string& strategy) {
-  for (const char* other : {"csv", "trajectories", "report", "sheet"}) {
+  for (const char* other : {"csv", "trajectories", "report", "sheet", "bake"}) {
     if (p.options.count(other)) {
       throw UsageError(std::string("--dump-control: runs the strategy alone; not with --") + other);
     }

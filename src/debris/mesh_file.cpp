@@ -207,22 +207,28 @@ std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path
 // A piece's vertices in the object's frame and its faces, counter-clockwise from outside.
 void piece_polyhedron(const Piece& p, std::vector<Eigen::Vector3d>& v,
                       std::vector<std::vector<int>>& faces) {
+  body_polyhedron(p.shape.get(), p.half_extents_m, v, faces);
+  for (Eigen::Vector3d& x : v) x = p.centre_m + p.rotation * x;
+}
+
+}  // namespace
+
+void body_polyhedron(const ConvexShape* shape, const Eigen::Vector3d& half_extents_m,
+                     std::vector<Eigen::Vector3d>& v, std::vector<std::vector<int>>& faces) {
   v.clear();
   faces.clear();
-  if (p.shape) {
-    for (const auto& x : p.shape->vertices_m) v.push_back(p.centre_m + p.rotation * x);
-    faces = p.shape->faces;
+  if (shape) {
+    v = shape->vertices_m;
+    faces = shape->faces;
     return;
   }
   for (int c = 0; c < 8; ++c) {
     const Eigen::Vector3d s(c & 1 ? 1 : -1, c & 2 ? 1 : -1, c & 4 ? 1 : -1);
-    v.push_back(p.centre_m + p.rotation * s.cwiseProduct(p.half_extents_m));
+    v.push_back(s.cwiseProduct(half_extents_m));
   }
   // Bit 0 is x, bit 1 y, bit 2 z; each loop counter-clockwise seen from outside.
   faces = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 }
-
-}  // namespace
 
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
                                const MeshFrame& frame, std::vector<std::string>* warnings) {

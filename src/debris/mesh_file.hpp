@@ -39,6 +39,13 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
                                 double density_kgpm3, const MeshFrame& frame = {},
                                 std::vector<std::string>* warnings = nullptr);
 
+// A piece's vertices about its centre of mass in its body axes, and its faces, each a loop
+// counter-clockwise seen from outside: the hull `shape`, or without one the box of these half
+// extents (a grid piece). The meshes of pieces_obj, pieces_glb and the bake (report/gltf_bake.hpp).
+void body_polyhedron(const ConvexShape* shape, const Eigen::Vector3d& half_extents_m,
+                     std::vector<Eigen::Vector3d>& vertices_m,
+                     std::vector<std::vector<int>>& faces);
+
 // Each piece's hull (a grid piece's box) in the object's frame, one OBJ object `piece_<n>` per
 // piece with 17 significant digits, so the file reads back to the last bit of every vertex.
 std::string pieces_obj(const std::vector<Piece>& pieces);

@@ -1,11 +1,14 @@
 #include "metrics/trajectory_writer.hpp"
 
+#include "geometry/orientation.hpp"
 #include "io/number_format.hpp"
 
 namespace fragsim {
 
 const char* TrajectoryWriter::header() {
-  return "strategy,step,t_s,fragment,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,candidate,fx_N,fy_N,fz_N\n";
+  return "strategy,step,t_s,fragment,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,candidate,fx_N,fy_N,fz_N,qx,"
+         "qy,"
+         "qz,qw\n";
 }
 
 TrajectoryWriter::TrajectoryWriter(std::ostream& out) : out_(out) {
@@ -53,6 +56,11 @@ void TrajectoryWriter::write(const StepSnapshot& snap) {
     for (int k = 0; k < 3; ++k) {
       buffer_ += ',';
       append_double(buffer_, force_N_[i][k]);
+    }
+    const Eigen::Quaterniond q = orientation_quaternion(f.rotation);
+    for (double c : {q.x(), q.y(), q.z(), q.w()}) {
+      buffer_ += ',';
+      append_double(buffer_, c);
     }
     buffer_ += '\n';
   }

@@ -41,13 +41,14 @@ TEST(TrajectoryWriter, WritesOneRowPerFragmentAndStepWithThatStepsFlagAndForce) 
   writer.end();
 
   EXPECT_EQ(out.str(),
-            "strategy,step,t_s,fragment,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,candidate,fx_N,fy_N,fz_N\n"
-            "edge,0,0,0,1,2,3,0,0,-1,0,0,0,0\n"
-            "edge,0,0,1,0.5,0,-4,0,0,0,0,0,0,0\n"
-            "edge,1,0.25,0,1,2,2.75,0,0,-1,0,0,0,0\n"
-            "edge,1,0.25,1,0.5,0,-4,0,0,0,1,0,2,0\n"
-            "edge,2,0.5,0,1,2,2.75,0,0,-1,0,0,0,0\n"
-            "edge,2,0.5,1,0.5,0,-4,0,0,0,0,0,0,0\n");
+            "strategy,step,t_s,fragment,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,candidate,fx_N,fy_N,fz_N,"
+            "qx,qy,qz,qw\n"
+            "edge,0,0,0,1,2,3,0,0,-1,0,0,0,0,0,0,0,1\n"
+            "edge,0,0,1,0.5,0,-4,0,0,0,0,0,0,0,0,0,0,1\n"
+            "edge,1,0.25,0,1,2,2.75,0,0,-1,0,0,0,0,0,0,0,1\n"
+            "edge,1,0.25,1,0.5,0,-4,0,0,0,1,0,2,0,0,0,0,1\n"
+            "edge,2,0.5,0,1,2,2.75,0,0,-1,0,0,0,0,0,0,0,1\n"
+            "edge,2,0.5,1,0.5,0,-4,0,0,0,0,0,0,0,0,0,0,1\n");
 }
 
 TEST(TrajectoryWriter, EachRunIsTaggedWithItsStrategyUnderOneHeader) {
@@ -62,8 +63,22 @@ TEST(TrajectoryWriter, EachRunIsTaggedWithItsStrategyUnderOneHeader) {
     writer.end();
   }
   EXPECT_EQ(out.str(), std::string(TrajectoryWriter::header()) +
-                           "none,0,0,0,0,1.6,-10,0,0,0,0,0,0,0\n"
-                           "wall,0,0,0,0,1.6,-10,0,0,0,0,0,0,0\n");
+                           "none,0,0,0,0,1.6,-10,0,0,0,0,0,0,0,0,0,0,1\n"
+                           "wall,0,0,0,0,1.6,-10,0,0,0,0,0,0,0,0,0,0,1\n");
+}
+
+// The orientation, a unit quaternion x y z w with w >= 0: a half turn about x is (1, 0, 0, 0).
+TEST(TrajectoryWriter, WritesEachFragmentsOrientationAsAUnitQuaternion) {
+  std::ostringstream out;
+  TrajectoryWriter writer(out);
+  std::vector<FragmentState> frags(1);
+  frags[0].rotation = Eigen::Vector3d(1, -1, -1).asDiagonal();
+  StepSnapshot snap;
+  snap.fragments = frags;
+  writer.begin({nullptr, "none", 1, 0, 1.0 / 60.0}, snap);
+  writer.end();
+  EXPECT_EQ(out.str(),
+            std::string(TrajectoryWriter::header()) + "none,0,0,0,0,0,0,0,0,0,0,0,0,0,1,0,0,0\n");
 }
 
 }  // namespace
