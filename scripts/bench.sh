@@ -10,6 +10,8 @@
 #   play.txt                        fragsim play's frame at 640x360 (--bench-frames, 3 runs each)
 #   scale_curve.csv, scale_curve.png
 #                                   time per step and peak memory, 1k to 100k fragments
+#   worst_frame.txt                 edge and edge-min by phase of the explosion, timed in-run
+#                                   (bench/worst_frame.cpp), at 1,728 and 15,625 fragments
 # Run it on an otherwise idle machine: medians are robust to a little noise, not to a busy core.
 # Usage: scripts/bench.sh [OUT]     (about 15 minutes on 2 cores)
 set -euo pipefail
@@ -48,6 +50,13 @@ for i in 1 2 3; do
     echo "$s: $("$bin/fragsim" play --scene data/scenes/front.ini --bench-frames 300 --strategy "$s" | tail -n 1)"
   done
 done | tee "$out/play.txt"
+
+echo "== the worst frame: the controller's cost by phase, inside a real run"
+for s in edge-min edge; do
+  for splits in 12 25; do
+    "$bin/bench/worst_frame" data/scenes/front.ini "$s" 5 "object.splits=$splits"
+  done
+done | tee "$out/worst_frame.txt"
 
 echo "== scale curve"
 scripts/scale_curve.sh "$out/scale_curve.csv" # draws scale_curve.png beside it

@@ -92,6 +92,77 @@ TEST(FirstRoot, LowerDegrees) {
   EXPECT_NEAR(*quad, 2.0, 1e-12);
 }
 
+// A quadratic's roots come in closed form (first_root.cpp, quadratic_root_between). Against the
+// roots of the same coefficients in long double: each reported root within the simple-root
+// tolerance 16 eps size / |p'(z)| + 4 eps |z| of a true one (the bound first_root.hpp states for
+// the search; a close pair has small |p'| and so a wide tolerance), every true root with a
+// report, in four families: spread roots, close pairs, a tangent touch perturbed, and roots from
+// 1e-30 to 1e30.
+TEST(FirstRoot, QuadraticRootsAgreeWithLongDouble) {
+  using LD = long double;
+  std::mt19937_64 rng(20261203);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto log_uniform = [&](double lo_exp, double hi_exp) {
+    return std::pow(10.0, lo_exp + (hi_exp - lo_exp) * (u(rng) + 1.0) / 2.0);
+  };
+  int checked = 0;
+  for (int family = 0; family < 4; ++family) {
+    for (int n = 0; n < 5000; ++n) {
+      double a = 10.0 * u(rng);
+      double b = 10.0 * u(rng);
+      double scale = 1.0 + std::abs(u(rng));
+      if (family == 1) b = a + log_uniform(-10, -1) * u(rng);
+      if (family == 3) {
+        a = (u(rng) > 0 ? 1.0 : -1.0) * log_uniform(-30, 30);
+        b = (u(rng) > 0 ? 1.0 : -1.0) * log_uniform(-30, 30);
+        scale = log_uniform(-10, 10);
+      }
+      Quartic c{scale * a * b, -scale * (a + b), scale, 0.0, 0.0};
+      if (family == 2) {  // (x - a)^2 + e, e from 1e-16 to 1e-4 of the terms, either sign
+        c = {a * a, -2.0 * a, 1.0, 0.0, 0.0};
+        c[0] += u(rng) * log_uniform(-16, -4) * (2.0 * a * a);
+      }
+      // The true roots of the rounded coefficients, in long double.
+      const LD c2 = c[2], c1 = c[1], c0 = c[0];
+      const LD disc = c1 * c1 - 4.0L * c2 * c0;
+      const LD lo =
+          -4.0L * std::max(std::abs(static_cast<LD>(a)), std::abs(static_cast<LD>(b))) - 1.0L;
+      const double bound = static_cast<double>(-lo);
+      const std::vector<double> found = real_roots(c, -bound, bound);
+      std::vector<LD> truth;
+      if (disc >= 0.0L) {
+        const LD h = -0.5L * (c1 + std::copysign(std::sqrt(disc), c1));
+        truth = {h / c2, c0 / h};
+      }
+      const auto tol = [&](LD z) {
+        const LD size = std::abs(c0) + std::abs(c1) * std::abs(z) + std::abs(c2) * z * z;
+        const LD slope = std::abs(c1 + 2.0L * c2 * z);
+        return 16.0L * std::numeric_limits<double>::epsilon() * size / slope +
+               4.0L * std::numeric_limits<double>::epsilon() * std::abs(z);
+      };
+      SCOPED_TRACE(::testing::Message() << "family " << family << " #" << n);
+      for (const double x : found) {
+        bool near_one = false;
+        for (const LD z : truth) near_one |= std::abs(static_cast<LD>(x) - z) <= tol(z);
+        // A touch within rounding is reported at the vertex with no true root nearby.
+        const LD vertex = -c1 / (2.0L * c2);
+        near_one |= truth.empty() &&
+                    std::abs(static_cast<LD>(x) - vertex) <= 1e-7L * (1.0L + std::abs(vertex));
+        EXPECT_TRUE(near_one) << "root " << x;
+      }
+      for (const LD z : truth) {
+        if (!(std::abs(z) < -lo)) continue;
+        bool reported = false;
+        for (const double x : found) reported |= std::abs(static_cast<LD>(x) - z) <= tol(z);
+        EXPECT_TRUE(reported) << "missed " << static_cast<double>(z);
+      }
+      ++checked;
+      if (::testing::Test::HasFailure()) return;
+    }
+  }
+  EXPECT_EQ(checked, 20000);
+}
+
 TEST(FirstRoot, NearTouchIsJudgedAgainstRounding) {
   // (x - 1)^2 + e: Horner's error at 1 is ~4 eps |terms| ~ 2e-15. Clearly above it: no root;
   // below it: a touch, reported at the minimum; clearly negative: two roots 1 -+ sqrt(-e), the
@@ -192,6 +263,69 @@ TEST(FirstRoot, FirstNonpositiveAgreesWithRealRoots) {
     }
   }
   EXPECT_GT(entries, 1000);
+}
+
+// A guess near the first crossing (edge's last contact time, a step on) finds the same crossing
+// as the full search, to its accuracy: on random quartics the guess is the true first entry moved
+// by up to 80% of the half width, and the answers agree to 1e-12 of the interval. A guess past an
+// earlier crossing, or with the crossing outside its bracket, falls back to the full search and
+// so gives its answer to the bit.
+TEST(FirstRoot, FirstNonpositiveNearFindsTheSameCrossing) {
+  std::mt19937_64 rng(32);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  int warm = 0;
+  for (int n = 0; n < 20000; ++n) {
+    Quartic c{};
+    for (double& x : c) x = normal(rng);
+    if (c[4] == 0.0) continue;
+    const double hi = 3.0 * std::abs(normal(rng)) + 0.1;
+    const auto full = first_nonpositive(c, 0.0, hi);
+    if (!full || *full == 0.0) continue;
+    const double half_width = 0.05 * hi;
+    const auto near =
+        first_nonpositive_near(c, 0.0, hi, *full + 0.8 * half_width * u(rng), half_width);
+    ASSERT_TRUE(near.has_value()) << n;
+    EXPECT_NEAR(*near, *full, 1e-12 * hi) << n;
+    warm += *near != *full ? 1 : 0;
+    // A guess well past the first crossing: the full search's answer, bit for bit.
+    const auto late = first_nonpositive_near(c, 0.0, hi, *full + 3.0 * half_width, half_width);
+    EXPECT_EQ(late, full) << n;
+  }
+  // Roots at 0.5 and 2: guessing 2 must not skip the crossing at 0.5.
+  const Quartic two = from_roots(0.5, 2.0, 3.0, 4.0);
+  const auto first = first_nonpositive_near(two, 0.0, 2.5, 2.0, 0.1);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_NEAR(*first, 0.5, 1e-14);
+  EXPECT_EQ(first_nonpositive_near(two, 0.0, 2.5, std::nan(""), 0.1),
+            first_nonpositive(two, 0.0, 2.5));
+  EXPECT_GT(warm, 0);  // some answers came from the narrowed bracket (other last bits)
+}
+
+// The batch with guesses gives first_nonpositive_near's answers bit for bit.
+TEST(FirstRootBatch, GuessesGiveTheSameAnswersAsOneAtATime) {
+  std::mt19937_64 rng(33);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<Quartic> polys;
+  std::vector<double> his, guesses;
+  for (int n = 0; n < 4000; ++n) {
+    Quartic c{};
+    for (double& x : c) x = normal(rng);
+    const double hi = 3.0 * std::abs(normal(rng)) + 0.1;
+    const auto full = first_nonpositive(c, 0.0, hi);
+    polys.push_back(c);
+    his.push_back(hi);
+    // Good guesses, poor ones and none.
+    guesses.push_back(n % 3 == 0   ? std::nan("")
+                      : n % 3 == 1 ? (full ? *full + 0.01 * normal(rng) : 1.0)
+                                   : 3.0 * std::abs(normal(rng)));
+  }
+  FirstNonpositiveBatch batch;
+  const auto answers = batch.run(polys, 0.0, his, guesses, 0.05);
+  ASSERT_EQ(answers.size(), polys.size());
+  for (std::size_t j = 0; j < polys.size(); ++j) {
+    EXPECT_EQ(answers[j], first_nonpositive_near(polys[j], 0.0, his[j], guesses[j], 0.05)) << j;
+  }
 }
 
 TEST(FirstRoot, ListedRootsAreRealRoots) {

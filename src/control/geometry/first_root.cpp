@@ -13,6 +13,8 @@
 #include <tuple>
 #include <vector>
 
+#include "geometry/work_space.hpp"
+
 namespace fragsim {
 namespace {
 
@@ -195,6 +197,40 @@ void solve_bracketed_many(std::span<BracketedSearch<D>> searches) {
 template <int D>
 std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out);
 
+// The root of a quadratic between a < b where p(a) = fa and p(b) = fb have strictly opposite
+// signs (p monotone between, so the exact p has one root there): the stable closed form, about a
+// third of the bracketed search's cost (a square root and two divisions against ~5 Newton
+// iterations of Horner's rule). Its error is a few ulps of the root plus the discriminant's
+// rounding, the same order as the search's stopping rule (docs/benchmarks.md, "The worst
+// frame"). Where rounding puts neither closed-form root inside [a, b] (a discriminant lost to
+// cancellation, coefficients near the ends of the double range), the search decides.
+double quadratic_root_between(const Quartic& q, double a, double b, double fa, double fb) {
+  const double c2 = q[2];
+  const double c1 = q[1];
+  const double c0 = q[0];
+  const double disc = c1 * c1 - 4.0 * c2 * c0;
+  if (std::isfinite(disc) && disc >= 0.0) {
+    const double h = -0.5 * (c1 + std::copysign(std::sqrt(disc), c1));
+    if (h != 0.0) {
+      const double r1 = h / c2;
+      const double r2 = c0 / h;
+      if (r1 >= a && r1 <= b) return r1;
+      if (r2 >= a && r2 <= b) return r2;
+    }
+  }
+  return solve_bracketed<2>(q, a, b, fa, fb);
+}
+
+// The crossing of p between two break points: closed form for a quadratic, else the search.
+template <int D>
+double root_between(const Quartic& c, double a, double b, double fa, double fb) {
+  if constexpr (D == 2) {
+    return quadratic_root_between(c, a, b, fa, fb);
+  } else {
+    return solve_bracketed<D>(c, a, b, fa, fb);
+  }
+}
+
 // The roots of a x^2 + b x + c (a != 0) strictly inside (lo, hi), ascending, for use as break
 // points: the stable formula, and where rounding makes the discriminant negative the vertex
 // stands in for two close roots (an extra break point is harmless, a missing one is not). Returns
@@ -266,7 +302,7 @@ std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out) {
       const Sample sb = sample<D>(c, pts[i + 1]);
       const bool zb = near_zero(sb);
       if (!za && !zb && (sa.p < 0.0) != (sb.p < 0.0)) {
-        add(solve_bracketed<D>(c, pts[i], pts[i + 1], sa.p, sb.p));
+        add(root_between<D>(c, pts[i], pts[i + 1], sa.p, sb.p));
       }
       if (zb) add(pts[i + 1]);
       sa = sb;
@@ -336,10 +372,32 @@ std::optional<double> first_nonpositive_of(const Quartic& c, double lo, double h
     // makes p look non-positive.
     if (near_zero(s)) return pts[i];
     // p > 0 at the previous point, < 0 here, monotone between: one crossing.
-    if (s.p < 0.0) return solve_bracketed<D>(c, pts[i - 1], pts[i], prev.p, s.p);
+    if (s.p < 0.0) return root_between<D>(c, pts[i - 1], pts[i], prev.p, s.p);
     prev = s;
   }
   return std::nullopt;
+}
+
+// A bracket of a quartic's first crossing near a guess (first_nonpositive_near), given p(lo) > 0
+// beyond rounding: [a, b] with p certified positive on [lo, a], p(a) > 0 > p(b) beyond rounding,
+// and p' certified negative on [a, b], so that the first crossing is the one in [a, b].
+struct Bracket {
+  double a, b, fa, fb;
+};
+std::optional<Bracket> bracket_near(const Quartic& c, double lo, double hi, double guess,
+                                    double half_width) {
+  if (!(std::isfinite(guess) && half_width > 0.0)) return std::nullopt;
+  const double a = std::max(lo, guess - half_width);
+  const double b = std::min(hi, guess + half_width);
+  if (!(a < b)) return std::nullopt;
+  if (a > lo && !clearly_positive<4>(c, lo, a)) return std::nullopt;
+  const Sample sa = sample<4>(c, a);
+  if (!(sa.p > 0.0) || near_zero(sa)) return std::nullopt;
+  const Sample sb = sample<4>(c, b);
+  if (!(sb.p < 0.0) || near_zero(sb)) return std::nullopt;
+  const Quartic d = derivative(c);
+  if (!clearly_positive<3>({-d[0], -d[1], -d[2], -d[3], 0.0}, a, b)) return std::nullopt;
+  return Bracket{a, b, sa.p, sb.p};
 }
 
 bool usable(const Quartic& c, double lo, double hi) {
@@ -351,6 +409,19 @@ bool usable(const Quartic& c, double lo, double hi) {
 
 double evaluate(const Quartic& c, double x) {
   return c[0] + x * (c[1] + x * (c[2] + x * (c[3] + x * c[4])));
+}
+
+std::optional<double> first_nonpositive_near(const Quartic& c, double lo, double hi, double guess,
+                                             double half_width) {
+  if (usable(c, lo, hi) && degree(c) == 4) {
+    const Sample first = sample<4>(c, lo);
+    if (first.p > 0.0 && !near_zero(first)) {
+      if (const std::optional<Bracket> br = bracket_near(c, lo, hi, guess, half_width)) {
+        return solve_bracketed<4>(c, br->a, br->b, br->fa, br->fb);
+      }
+    }
+  }
+  return first_nonpositive(c, lo, hi);
 }
 
 std::vector<double> real_roots(const Quartic& c, double lo, double hi) {
@@ -450,12 +521,12 @@ FirstNonpositiveBatch::FirstNonpositiveBatch(std::pmr::memory_resource* mem)
 FirstNonpositiveBatch::~FirstNonpositiveBatch() = default;
 
 void FirstNonpositiveBatch::reserve(std::size_t n) {
-  work_->out.reserve(n);
-  work_->pending.reserve(n);
-  work_->derivatives.reserve(n);
+  reserve_touched(work_->out, n);
+  reserve_touched(work_->pending, n);
+  reserve_touched(work_->derivatives, n);
   // A quartic brackets its first crossing between at most three critical points.
-  work_->cubic_searches.reserve(3 * n);
-  work_->quartic_searches.reserve(n);
+  reserve_touched(work_->cubic_searches, 3 * n);
+  reserve_touched(work_->quartic_searches, n);
 }
 FirstNonpositiveBatch::FirstNonpositiveBatch(const FirstNonpositiveBatch& other)
     : work_(Work::make(other.work_->mem)) {
@@ -469,6 +540,14 @@ FirstNonpositiveBatch& FirstNonpositiveBatch::operator=(const FirstNonpositiveBa
 std::span<const std::optional<double>> FirstNonpositiveBatch::run(std::span<const Quartic> c,
                                                                   double lo,
                                                                   std::span<const double> hi) {
+  return run(c, lo, hi, {}, 0.0);
+}
+
+std::span<const std::optional<double>> FirstNonpositiveBatch::run(std::span<const Quartic> c,
+                                                                  double lo,
+                                                                  std::span<const double> hi,
+                                                                  std::span<const double> guess,
+                                                                  double half_width) {
   Work& w = *work_;
   const std::size_t n = c.size();
   w.out.assign(n, std::nullopt);
@@ -492,6 +571,15 @@ std::span<const std::optional<double>> FirstNonpositiveBatch::run(std::span<cons
       continue;
     }
     if (clearly_positive<4>(c[j], lo, hi[j])) continue;
+    // A guess that brackets the crossing skips the derivative's roots: straight to the search.
+    if (!guess.empty()) {
+      if (const std::optional<Bracket> br = bracket_near(c[j], lo, hi[j], guess[j], half_width)) {
+        pj.state = Work::State::kCrossing;
+        pj.crossing = static_cast<int>(w.quartic_searches.size());
+        w.quartic_searches.emplace_back(c[j], br->a, br->b, br->fa, br->fb);
+        continue;
+      }
+    }
     w.derivatives[j] = derivative(c[j]);
     const Quartic& dc = w.derivatives[j];
     Points pts;

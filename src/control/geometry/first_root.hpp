@@ -47,6 +47,15 @@ RootList list_real_roots(const Quartic& c, double lo, double hi);
 // without a search.
 std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi);
 
+// first_nonpositive with a guess of where the first crossing is (say the last step's, moved on by
+// a step): when p is certified positive on [lo, guess - half_width] (its Bernstein coefficients),
+// negative at guess + half_width and decreasing in between (its derivative's), the crossing is
+// searched in that bracket alone, skipping the derivative's roots; otherwise, or for a degree
+// other than 4, first_nonpositive itself. The same crossing either way, to the search's accuracy
+// (not always the same last bits: the bracket differs). A NaN guess is no guess.
+std::optional<double> first_nonpositive_near(const Quartic& c, double lo, double hi, double guess,
+                                             double half_width);
+
 // first_nonpositive of many polynomials, c[j] on [lo, hi[j]], with the same answers bit for bit:
 // the root searches of all of them (those of the derivative that bracket each, then each one's
 // first crossing) are advanced in turn, so the processor overlaps their chains of dependent
@@ -62,6 +71,11 @@ class FirstNonpositiveBatch {
   // One answer per polynomial, in order; valid until the next call.
   std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
                                              std::span<const double> hi);
+  // The same with a guess per polynomial (NaN: none), as first_nonpositive_near: the same answers
+  // as it, bit for bit.
+  std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
+                                             std::span<const double> hi,
+                                             std::span<const double> guess, double half_width);
   // Room for runs over up to n polynomials.
   void reserve(std::size_t n);
 

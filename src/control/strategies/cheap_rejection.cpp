@@ -6,6 +6,7 @@
 #include <cstring>
 #include <utility>
 
+#include "geometry/work_space.hpp"
 #include "strategies/lanes.hpp"
 
 // The four-lane first tier: GCC on x86-64 (Clang refuses AVX vectors outside AVX code even where
@@ -653,10 +654,12 @@ bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, doub
 
 void BallClearance::reserve(std::size_t n) {
   const std::size_t padded = n + n % lanes::kWidth;
-  for (auto* x : {&dx_, &dy_, &dz_, &vx_, &vy_, &vz_, &r0_, &t_end_, &tol_}) x->reserve(padded);
-  clears_.reserve(padded);
-  pieces_.reserve(2 * n);
-  next_.reserve(2 * n);
+  for (auto* x : {&dx_, &dy_, &dz_, &vx_, &vy_, &vz_, &r0_, &t_end_, &tol_}) {
+    reserve_touched(*x, padded);
+  }
+  reserve_touched(clears_, padded);
+  reserve_touched(pieces_, 2 * n);
+  reserve_touched(next_, 2 * n);
 }
 
 void BallClearance::resize(std::size_t n) {
@@ -852,10 +855,10 @@ void TwoBoxClearance::use_wide_lanes(bool wide) {
 }
 
 void TwoBoxClearance::reserve(std::size_t n) {
-  clears_.reserve(n);
-  grown_clears_.reserve(n);
-  doubt_.reserve(n + 4);
-  unsettled_.reserve(n);
+  reserve_touched(clears_, n);
+  reserve_touched(grown_clears_, n);
+  reserve_touched(doubt_, n + 4);
+  reserve_touched(unsettled_, n);
 }
 
 void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes) {

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/time_to_plane.hpp"
+#include "geometry/work_space.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/lanes.hpp"
 
@@ -123,19 +125,20 @@ lanes::Lanes capped_time_to_horizon(double a, lanes::Lanes b, lanes::Lanes c, do
 
 void ContactPredictor::reserve(std::size_t n) {
   const std::size_t padded = n + n % lanes::kWidth;
-  screened_.reserve(n);
-  for (auto* x : {&vy_, &py_, &radius_, &t_horizon_}) x->reserve(padded);
-  quartics_.reserve(n);
-  quartic_horizons_s_.reserve(n);
-  quartic_of_.reserve(n);
-  out_.reserve(n);
+  reserve_touched(screened_, n);
+  for (auto* x : {&vy_, &py_, &radius_, &t_horizon_}) reserve_touched(*x, padded);
+  reserve_touched(quartics_, n);
+  reserve_touched(quartic_horizons_s_, n);
+  reserve_touched(quartic_of_, n);
+  reserve_touched(quartic_guess_s_, n);
+  reserve_touched(out_, n);
   roots_.reserve(n);
   clearance_.reserve(n);
 }
 
 std::span<const ContactPrediction> ContactPredictor::predict(
     const ContactQuery& query, std::span<const FragmentState> fragments, std::span<const int> which,
-    std::span<const char> screen) {
+    std::span<const char> screen, std::span<const double> guess_s, double guess_half_width_s) {
   const auto fragment = [&](std::size_t k) -> const FragmentState& {
     return fragments[static_cast<std::size_t>(which[k])];
   };
@@ -144,6 +147,7 @@ std::span<const ContactPrediction> ContactPredictor::predict(
   quartics_.clear();
   quartic_horizons_s_.clear();
   quartic_of_.clear();
+  quartic_guess_s_.clear();
   // solve_contact for out_[k], whose t_horizon_s is set, up to its root search.
   const auto defer_solve = [&](std::size_t k, const BallisticPath& p, const ReachModel& model) {
     Quartic q;
@@ -152,6 +156,8 @@ std::span<const ContactPrediction> ContactPredictor::predict(
     quartics_.push_back(q);
     quartic_horizons_s_.push_back(th);
     quartic_of_.push_back(static_cast<int>(k));
+    quartic_guess_s_.push_back(guess_s.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                               : guess_s[k]);
   };
   for (std::size_t k = 0; k < which.size(); ++k) {
     if (screen.empty() || screen[k]) {
@@ -206,7 +212,9 @@ std::span<const ContactPrediction> ContactPredictor::predict(
   }
   // The root searches of all of them together (the same answers as solve_contact's one by one).
   const std::span<const std::optional<double>> roots =
-      roots_.run(quartics_, 0.0, quartic_horizons_s_);
+      guess_s.empty()
+          ? roots_.run(quartics_, 0.0, quartic_horizons_s_)
+          : roots_.run(quartics_, 0.0, quartic_horizons_s_, quartic_guess_s_, guess_half_width_s);
   for (std::size_t q = 0; q < roots.size(); ++q) {
     if (!roots[q]) continue;
     ContactPrediction& pred = out_[static_cast<std::size_t>(quartic_of_[q])];

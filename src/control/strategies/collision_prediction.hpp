@@ -88,10 +88,15 @@ class ContactPredictor {
   // One prediction per index in `which`, in order; valid until the next call. `screen`, when not
   // empty, says per index whether the cheap rejection is worth trying first: not for a fragment
   // that was a candidate a step ago and almost surely still is (the answer is the same either way).
+  // `guess_s`, when not empty, is per index a guess of the contact time (NaN: none), searched
+  // first within guess_half_width_s of it (first_nonpositive_near: the same contact to the
+  // search's accuracy, found without the derivative's roots when the guess brackets it).
   std::span<const ContactPrediction> predict(const ContactQuery& query,
                                              std::span<const FragmentState> fragments,
                                              std::span<const int> which,
-                                             std::span<const char> screen = {});
+                                             std::span<const char> screen = {},
+                                             std::span<const double> guess_s = {},
+                                             double guess_half_width_s = 0.0);
   // Room for predictions of up to n fragments.
   void reserve(std::size_t n);
 
@@ -105,6 +110,7 @@ class ContactPredictor {
   std::pmr::vector<Quartic> quartics_{mem_};
   std::pmr::vector<double> quartic_horizons_s_{mem_};
   std::pmr::vector<int> quartic_of_{mem_};
+  std::pmr::vector<double> quartic_guess_s_{mem_};
   FirstNonpositiveBatch roots_{mem_};
   std::pmr::vector<ContactPrediction> out_{mem_};
 };

@@ -384,6 +384,8 @@ void EdgeMinStrategy::reset(int fragment_count) {
                        Eigen::Vector3d::Zero());
   r_max_hint_m_ = -1.0;
   cover_.reset(fragment_count);
+  // The rejection's work space, its pages touched, so that no step allocates or faults.
+  clearance_.reserve(static_cast<std::size_t>(std::max(fragment_count, 0)));
 }
 
 void EdgeMinStrategy::reserve(int fragment_count) {

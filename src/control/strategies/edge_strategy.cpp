@@ -1,32 +1,47 @@
 #include "strategies/edge_strategy.hpp"
 
 #include <algorithm>
+#include <limits>
 
+#include "geometry/work_space.hpp"
 #include "strategies/force_cap.hpp"
 
 namespace fragsim {
+namespace {
+
+constexpr double kNoContact = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
 
 void EdgeStrategy::reset(int fragment_count) {
   // At t = 0 every fragment is examined; afterwards only those still candidates.
   candidate_.assign(static_cast<std::size_t>(fragment_count), 1);
   pushed_.assign(static_cast<std::size_t>(fragment_count), 0);
   predicted_.assign(static_cast<std::size_t>(fragment_count), 0);
+  last_contact_s_.assign(static_cast<std::size_t>(fragment_count), kNoContact);
+  // The work space too, its pages touched: the explosion's first step examines every fragment,
+  // and must not spend its time on page faults (geometry/work_space.hpp).
+  reserve(fragment_count);
 }
 
 void EdgeStrategy::reserve(int fragment_count) {
   const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
   for (auto* v : {&candidate_, &pushed_, &predicted_, &candidate_before_, &pushed_before_,
-                  &predicted_before_, &screen_}) {
+                  &predicted_before_}) {
     v->reserve(n);
   }
-  examined_.reserve(n);
+  last_contact_s_.reserve(n);
+  last_contact_before_s_.reserve(n);
+  reserve_touched(screen_, n);
+  reserve_touched(guess_s_, n);
+  reserve_touched(examined_, n);
   predictor_.reserve(n);
 }
 
 void EdgeStrategy::carry_over(std::span<const int> previous) {
   // Each into its spare array, which then keeps the state before the call for undo_carry_over.
-  auto remap = [&previous](std::pmr::vector<char>& state, std::pmr::vector<char>& spare,
-                           char fresh) {
+  auto remap = [&previous]<class T>(std::pmr::vector<T>& state, std::pmr::vector<T>& spare,
+                                    T fresh) {
     spare.assign(previous.size(), fresh);
     for (std::size_t i = 0; i < previous.size(); ++i) {
       const int j = previous[i];
@@ -36,15 +51,17 @@ void EdgeStrategy::carry_over(std::span<const int> previous) {
     }
     state.swap(spare);
   };
-  remap(candidate_, candidate_before_, 1);
-  remap(pushed_, pushed_before_, 0);
-  remap(predicted_, predicted_before_, 0);
+  remap(candidate_, candidate_before_, char{1});
+  remap(pushed_, pushed_before_, char{0});
+  remap(predicted_, predicted_before_, char{0});
+  remap(last_contact_s_, last_contact_before_s_, kNoContact);
 }
 
 void EdgeStrategy::undo_carry_over() {
   candidate_.swap(candidate_before_);
   pushed_.swap(pushed_before_);
   predicted_.swap(predicted_before_);
+  last_contact_s_.swap(last_contact_before_s_);
 }
 
 bool EdgeStrategy::should_examine(const StepContext& ctx, std::size_t i) const {
@@ -81,12 +98,18 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   // nearly always one still: trying the rejection on it would only cost time.
   examined_.clear();
   screen_.clear();
+  guess_s_.clear();
   for (std::size_t i = 0; i < ctx.fragments.size(); ++i) {
     if (!should_examine(ctx, i)) continue;
     examined_.push_back(static_cast<int>(i));
     screen_.push_back(predicted_[i] ? 0 : 1);
+    // Where the last step's contact is now: the search starts there (NaN: no guess).
+    guess_s_.push_back(last_contact_s_[i] - ctx.dt_s);
   }
-  const auto predictions = predictor_.predict(query, ctx.fragments, examined_, screen_);
+  // Within a step of the guess: the contact moves by about -dt a step, the push's own effect on
+  // it is a fraction of that.
+  const auto predictions =
+      predictor_.predict(query, ctx.fragments, examined_, screen_, guess_s_, 0.25 * ctx.dt_s);
 
   for (std::size_t k = 0; k < examined_.size(); ++k) {
     const auto i = static_cast<std::size_t>(examined_[k]);
@@ -94,6 +117,7 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     pushed_[i] = 0;
     candidate_[i] = pred.candidate ? 1 : 0;
     predicted_[i] = candidate_[i];
+    last_contact_s_[i] = pred.candidate ? pred.t_contact_s : kNoContact;
     if (!pred.candidate) continue;
     out.activity.candidates.push_back(static_cast<int>(i));
     const FragmentState& f = ctx.fragments[i];

@@ -45,11 +45,16 @@ class EdgeStrategy final : public Strategy {
   std::pmr::vector<char> candidate_{mem_};  // examined again next step
   std::pmr::vector<char> pushed_{mem_};     // got a force in the last step
   std::pmr::vector<char> predicted_{mem_};  // was a candidate by the last prediction (not reset's)
-  // The three above as they were before the last carry_over.
+  // The contact time the last prediction found (NaN: none), relative to that step: a step later
+  // the contact is near it less dt, where its root search starts (first_nonpositive_near).
+  std::pmr::vector<double> last_contact_s_{mem_};
+  // The four above as they were before the last carry_over.
   std::pmr::vector<char> candidate_before_{mem_}, pushed_before_{mem_}, predicted_before_{mem_};
+  std::pmr::vector<double> last_contact_before_s_{mem_};
   // Work space, kept between steps to save allocations; holds no state of the run.
   std::pmr::vector<int> examined_{mem_};
   std::pmr::vector<char> screen_{mem_};
+  std::pmr::vector<double> guess_s_{mem_};
   ContactPredictor predictor_{mem_};
 };
 
