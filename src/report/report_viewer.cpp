@@ -248,8 +248,8 @@ std::string viewer_section_html(const Scene& scene, const ViewerRecorder& record
        "time); orbit view shows the camera's frustum as lines, the near rectangle in red: drag to "
        "turn, wheel to zoom. ";
   h += every == 1 ? std::string("Every step is shown.")
-                  : "Every " + std::to_string(every) +
-                        "th step is shown (and the last), to keep the page small.";
+                  : "One step in " + std::to_string(every) +
+                        " is shown (and the last), to keep the page small.";
   h += "</p>\n<div class=\"viewer-controls\">\n";
   h += "<button type=\"button\" id=\"viewer-play\">Play</button>\n";
   h += "<input type=\"range\" id=\"viewer-time\" min=\"0\" max=\"" +
@@ -267,7 +267,6 @@ std::string viewer_section_html(const Scene& scene, const ViewerRecorder& record
   // same runs) with each run's quantised poses as base64.
   std::string data = "{\"scene\":" + quoted(scene.name);
   data += ",\"every\":" + std::to_string(every);
-  data += ",\"target_m\":" + vec3(scene.object.centre_m, 5);
   data += ",\"ground\":" + std::string(scene.ground.enabled ? "true" : "false");
   data += ",\"ground_height_m\":" + num(scene.ground.height_m, 5);
   const CameraPose& c0 = recorder.runs().front().cameras.front();

@@ -38,11 +38,9 @@ async function start() {
     flat.computeVertexNormals();
     return flat;
   });
-  const materials = [
-    new THREE.MeshLambertMaterial({color: 0x8d99a6}),  // a piece
-    new THREE.MeshLambertMaterial({color: 0xf08c00}),  // pushed
-    new THREE.MeshLambertMaterial({color: 0xd62828}),  // cut by the near plane
-  ];
+  // Both sides drawn: a piece the near plane cuts shows its inside, as the game would.
+  const materials = [0x8d99a6, 0xf08c00, 0xd62828].map(  // a piece, pushed, cut by the near plane
+      color => new THREE.MeshLambertMaterial({color, side: THREE.DoubleSide}));
   const pieceCount = data.piece_mesh.length;
 
   function decode(run) {
@@ -70,7 +68,7 @@ async function start() {
       const ground = new THREE.Mesh(new THREE.PlaneGeometry(400, 400),
                                     new THREE.MeshLambertMaterial({color: 0xd8d2c4}));
       ground.rotation.x = -Math.PI / 2;
-      ground.position.set(data.target_m[0], data.ground_height_m, data.target_m[2]);
+      ground.position.set(target.x, data.ground_height_m, target.z);
       scene.add(ground);
     }
     const pieces = data.piece_mesh.map(m => {
@@ -96,11 +94,31 @@ async function start() {
 
   const runCamera = new THREE.PerspectiveCamera(data.fovy_deg, data.aspect, 0.1, data.far_m);
   const orbitCamera = new THREE.PerspectiveCamera(50, 1, 0.05, 2000);
-  const target = new THREE.Vector3(...data.target_m);
-  // The orbit starts beside the run's first camera, looking at the object.
+  // The orbit turns about the middle of the action: the box around the pieces' centre and the
+  // run's camera over the whole first run (the scene may have moved the object from its nominal
+  // centre, and the debris may fly past the camera). Far-flung single pieces do not count.
+  const action = new THREE.Box3();
+  {
+    const run = data.runs[0], P = decode(run).position;
+    for (let s = 0; s < run.t_s.length; ++s) {
+      const centre = new THREE.Vector3();
+      for (let i = 0; i < pieceCount; ++i) {
+        for (let k = 0; k < 3; ++k) {
+          const a = 3 * (s * pieceCount + i) + k;
+          centre.setComponent(k, centre.getComponent(k) + run.lo_m[k] +
+                                     (P[a] / 32767 + 1) / 2 * (run.hi_m[k] - run.lo_m[k]));
+        }
+      }
+      action.expandByPoint(centre.divideScalar(Math.max(pieceCount, 1)));
+      action.expandByPoint(new THREE.Vector3(...run.camera[s].slice(0, 3)));
+    }
+  }
+  const target = action.getCenter(new THREE.Vector3());
+  const reach = action.getSize(new THREE.Vector3()).length() / 2 + 2;
   const eye0 = new THREE.Vector3(...data.runs[0].camera[0].slice(0, 3));
-  const orbit = {radius: Math.max(eye0.distanceTo(target) * 1.6, 2), yaw: 0, pitch: 0.35};
-  orbit.yaw = Math.atan2(eye0.x - target.x, eye0.z - target.z) + 0.9;
+  const orbit = {radius: reach / Math.sin(THREE.MathUtils.degToRad(25)), yaw: 0, pitch: 0.45};
+  // Beside the run's camera, so its frustum and the debris in front of it are both in view.
+  orbit.yaw = Math.atan2(eye0.x - target.x, eye0.z - target.z) + 1.1;
 
   const q = new THREE.Quaternion(), p = new THREE.Vector3();
   function pose(v, sample) {
@@ -128,7 +146,7 @@ async function start() {
     runCamera.updateProjectionMatrix();
     runCamera.updateMatrixWorld();
     // Frustum corners in camera space, to the near plane and to a depth past the object.
-    const depth = Math.min(data.far_m, runCamera.position.distanceTo(target) * 1.4 + 1);
+    const depth = Math.min(data.far_m, reach);
     const corner = (d, sx, sy) => {
       const h = d * Math.tan(THREE.MathUtils.degToRad(data.fovy_deg) / 2);
       return new THREE.Vector3(sx * h * data.aspect, sy * h, -d).applyMatrix4(runCamera.matrixWorld);
@@ -156,18 +174,20 @@ async function start() {
   const modeSelect = document.getElementById('viewer-mode');
   const playButton = document.getElementById('viewer-play');
 
-  function resize() {
+  function resize(views, cameraView) {
     const width = Math.max(320, Math.floor(root.clientWidth));
-    const height = Math.round(width * 0.45);
+    // Through the run's camera each view keeps the run's aspect; orbiting, a fixed shape.
+    const wanted = cameraView ? width / views / data.aspect : width * 0.45;
+    const height = Math.round(Math.min(Math.max(wanted, 240), 720));
     if (canvas.width !== width || canvas.height !== height) renderer.setSize(width, height, true);
   }
 
   function draw() {
-    resize();
     const sample = Number(slider.value);
     const shown = [leftSelect.value, rightSelect.value].filter(s => s !== '');
-    const width = canvas.width, height = canvas.height;
     const cameraView = modeSelect.value === 'camera';
+    resize(Math.max(shown.length, 1), cameraView);
+    const width = canvas.width, height = canvas.height;
     renderer.setScissor(0, 0, width, height);
     renderer.setViewport(0, 0, width, height);
     renderer.setClearColor(0xffffff);
