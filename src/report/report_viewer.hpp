@@ -6,7 +6,7 @@
 //
 // The page must stay small and the same bytes for the same scene and seed, so the poses are
 // quantised: positions as 16-bit integers over the run's bounding box (error at most the box's
-// extent / 131,070 per axis), quaternion components as 16-bit integers (error at most 1/65,534);
+// extent / 131,068 per axis), quaternion components as 16-bit integers (error at most 1/65,534);
 // and sampled every `every` steps (viewer_sample_every), the last step always kept. A sample's
 // flags cover every step since the previous sample, so subsampling hides no push and no hit.
 
