@@ -228,22 +228,23 @@ async function start() {
     clock.textContent = 't = ' + t.toFixed(2) + ' s';
   }
 
-  let playing = false, last = 0;
+  // Play in real time: each frame shows the last sample due by the clock, skipping samples when
+  // drawing is slower than the run (software WebGL).
+  let playing = false, startMs = 0, startT = 0;
   function tick(now) {
     if (!playing) return;
     const t_s = data.runs[0].t_s;
-    const s = Number(slider.value);
-    // Real time: a sample lasts its share of the run.
-    const dt_ms = 1000 * (t_s[Math.min(s + 1, t_s.length - 1)] - t_s[s]);
-    if (now - last >= dt_ms) {
-      last = now;
-      if (s + 1 >= t_s.length) {
-        playing = false;
-        playButton.textContent = 'Play';
-        return;
-      }
-      slider.value = String(s + 1);
+    const due = startT + (now - startMs) / 1000;
+    let s = Number(slider.value);
+    while (s + 1 < t_s.length && t_s[s + 1] <= due) ++s;
+    if (s !== Number(slider.value)) {
+      slider.value = String(s);
       draw();
+    }
+    if (s + 1 >= t_s.length) {
+      playing = false;
+      playButton.textContent = 'Play';
+      return;
     }
     requestAnimationFrame(tick);
   }
@@ -252,7 +253,8 @@ async function start() {
     playButton.textContent = playing ? 'Pause' : 'Play';
     if (playing) {
       if (Number(slider.value) >= Number(slider.max)) slider.value = '0';
-      last = performance.now();
+      startMs = performance.now();
+      startT = data.runs[0].t_s[Number(slider.value)];
       requestAnimationFrame(tick);
     }
   });
