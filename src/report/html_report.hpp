@@ -1,9 +1,10 @@
 #pragma once
 // The comparison as one HTML page (fragsim compare --report DIR): the scene, a reading of the
 // numbers in prose, the comparison table (report/results_table.hpp, the terminal's cells; also
-// DIR/table.csv), the per-step metrics as inline SVG line charts, the contact sheet
-// (DIR/sheet.png, beside the page) and the scene's settings. Nothing is fetched:
-// no script, no font, no stylesheet from elsewhere; the page opens from disk.
+// DIR/table.csv), the 3D view of the runs (report_viewer.hpp), the per-step metrics as inline SVG
+// line charts, the contact sheet (DIR/sheet.png, beside the page) and the scene's settings.
+// Nothing is fetched: no script, no font, no stylesheet from elsewhere (three.js is inside the
+// page); the page opens from disk.
 //
 // The page is the same bytes for the same scene and seed: it holds no date and no wall-clock
 // timing (those stay in the terminal report and timing.csv).
