@@ -217,8 +217,9 @@ void ViewerRecorder::end() {
 std::string viewer_missing_text(const BundledThreeJs& three) {
   return "No 3D view in this report: this fragsim was built without three.js (" +
          std::string(three.missing) +
-         "). Install node and npm (scripts/setup.sh), reconfigure with cmake --preset release "
-         "so that it installs the pinned npm package three into the build folder, and rebuild.";
+         "). To get it: node and npm installed (scripts/setup.sh does), FRAGSIM_THREE_JS on (the "
+         "default), then reconfigure (cmake --preset release installs the pinned npm package "
+         "three into the build folder) and rebuild.";
 }
 
 std::string viewer_section_html(const Scene& scene, const ViewerRecorder& recorder,

@@ -7,12 +7,16 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "experiments/evaluation.hpp"
 #include "report/html_escape.hpp"
 #include "report/html_report.hpp"
 #include "report/report_viewer.hpp"
 #include "sim/scene_file.hpp"
+#include "support/run_fragsim.hpp"
 #include "support/text_count.hpp"
 
 namespace fragsim {
@@ -198,6 +202,26 @@ TEST(ReportViewer, PairIsNoneAndTheBestOrTheNextRun) {
   EXPECT_EQ(right, v.runs[*best].summary.strategy);
   const std::vector<Evaluation> one(v.runs.begin(), v.runs.begin() + 1);
   EXPECT_EQ(report_viewer_pair(one), (std::pair<std::string, std::string>{"none", ""}));
+}
+
+// The bound: front.ini (1,728 pieces) with every strategy stays under 30 MB, 3D view
+// included (5 s: occlusion off, it does not change the view). The page says it skips steps.
+TEST(ReportViewer, FrontWithEveryStrategyStaysUnder30MB) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "fragsim_report_front";
+  fs::remove_all(dir);
+  const test::Result r =
+      test::run_fragsim("compare --scene " + kFront + " --no-occlusion --report " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto bytes = fs::file_size(dir / "index.html");
+  EXPECT_LT(bytes, 30'000'000u);
+  if (bundled_three_js().available()) {
+    EXPECT_GT(bytes, 10'000'000u);  // the view's data is there
+    std::ifstream in(dir / "index.html", std::ios::binary);
+    const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(page.find("One step in 2 is shown (and the last)"), std::string::npos);
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace
