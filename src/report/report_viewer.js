@@ -73,19 +73,20 @@ async function start() {
     }
     const pieces = data.piece_mesh.map(m => {
       const mesh = new THREE.Mesh(geometries[m], materials[0]);
-      mesh.matrixAutoUpdate = true;
       scene.add(mesh);
       return mesh;
     });
     // The run's camera: its frustum to a depth past the object, the near rectangle in red.
     const frustum = new THREE.LineSegments(
         new THREE.BufferGeometry().setAttribute(
-            'position', new THREE.Float32BufferAttribute(new Float32Array(24 * 3), 3)),
+            'position', new THREE.Float32BufferAttribute(new Float32Array(16 * 3), 3)),
         new THREE.LineBasicMaterial({color: 0x1d3557}));
     const nearRect = new THREE.LineLoop(
         new THREE.BufferGeometry().setAttribute(
             'position', new THREE.Float32BufferAttribute(new Float32Array(4 * 3), 3)),
         new THREE.LineBasicMaterial({color: 0xd62828}));
+    // Their vertices move every frame, so three's bounding spheres (computed once) would cull them.
+    frustum.frustumCulled = nearRect.frustumCulled = false;
     scene.add(frustum, nearRect);
     const v = {run, scene, pieces, frustum, nearRect, poses: decode(run)};
     views.set(strategy, v);
@@ -157,7 +158,7 @@ async function start() {
     const e = runCamera.position;
     const lines = [];
     for (let k = 0; k < 4; ++k) {
-      lines.push(e, far[k], far[k], far[(k + 1) % 4], near[k], near[(k + 1) % 4]);
+      lines.push(e, far[k], far[k], far[(k + 1) % 4]);
     }
     const fa = v.frustum.geometry.attributes.position;
     lines.forEach((x, k) => fa.setXYZ(k, x.x, x.y, x.z));
