@@ -2,8 +2,10 @@
 # The HTML report in a real browser: writes `fragsim compare --report` for a scene, opens
 # index.html from disk in headless Chromium (driven through chromedriver by
 # tests/browser/check_report.py) and fails if the console shows an error, an image did not load,
-# a chart has no size or anything outside the report's folder was fetched; keeps a full-page
-# screenshot. Installs chromium, chromium-driver and python3 first if they are missing.
+# a chart has no size or anything outside the report's folder was fetched, or if the 3D view is
+# missing, reports no WebGL, draws only background or does not move with the time slider; keeps a
+# full-page screenshot and one of the 3D view (SCREENSHOT.3d.png). Installs chromium,
+# chromium-driver and python3 first if they are missing.
 # Usage: scripts/browser_test.sh [FRAGSIM_BINARY [SCREENSHOT.png [SCENE.ini]]]
 #   defaults: build/release/fragsim, a temporary file, data/scenes/thesis125.ini
 # Exit status: 0 passed, 1 failed, 77 skipped (the packages are missing and cannot be installed:

@@ -212,18 +212,28 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   }
   std::optional<FrameRecorder> recorder;
   if (sheet || report_dir) recorder.emplace(recorded_steps);
+  // The report's 3D view: recorded only when this build can draw it.
+  const BundledThreeJs three = bundled_three_js();
+  std::optional<ViewerRecorder> viewer;
+  if (report_dir) {
+    viewer.emplace(viewer_sample_every(p.scene.fragment_count(), p.scene.step_count(),
+                                       static_cast<int>(names.size())));
+  }
   const std::unique_ptr<BakeRequest> bake = bake_request(p, names);
   cli::ObserverFanOut extra;
   extra.add(traj ? &*traj : nullptr);
   extra.add(recorder ? &*recorder : nullptr);
   extra.add(bake ? &bake->recorder : nullptr);
+  extra.add(viewer && three.available() ? &*viewer : nullptr);
   const std::vector<Evaluation> runs = compare(p.scene, names, occlusion, extra.or_null(), jobs);
   cli::print_report(p.scene, runs, std::cout);
   if (bake) write_bakes(*bake, names);
   if (sheet) cli::write_sheet(*sheet, p.scene, *recorder, names, std::cout);
   if (report_dir) {
     const std::vector<std::string> written =
-        write_html_report(*report_dir, p.scene, runs, *recorder);
+        write_html_report(*report_dir, p.scene, runs, *recorder, *viewer, three);
+    if (!three.available())
+      std::cerr << "fragsim: --report: " << viewer_missing_text(three) << "\n";
     std::cout << "wrote";
     for (const std::string& f : written) std::cout << " " << f;
     std::cout << "\n";

@@ -19,11 +19,13 @@ void NearPlaneMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
   prev_opacity_.assign(n, 1.0f);
   per_step_.clear();
   per_step_.reserve(static_cast<std::size_t>(info.step_count));
+  last_step_.clear();
   fragment_steps_ = 0;
 }
 
 void NearPlaneMetric::observe(const StepSnapshot& snap) {
   int count = 0;
+  last_step_.clear();
   const bool translucent = !snap.opacity.empty();
   for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
     const FragmentState& f = snap.fragments[i];
@@ -36,6 +38,7 @@ void NearPlaneMetric::observe(const StepSnapshot& snap) {
       if (std::min(prev_opacity_[i], opacity) > 0.0f) {
         ++count;
         near_hit_[i] = 1;
+        last_step_.push_back(static_cast<int>(i));
       } else {
         near_invisible_[i] = 1;
       }

@@ -27,6 +27,8 @@ class NearPlaneMetric final : public RunObserver {
 
   // Fragments meeting the near rectangle in each step (index = step - 1).
   const std::vector<int>& per_step() const { return per_step_; }
+  // The fragments counted in the last observed step (the report's viewer highlights them).
+  const std::vector<int>& last_step_fragments() const { return last_step_; }
   bool intersected(int fragment) const {
     return near_hit_[static_cast<std::size_t>(fragment)] != 0;
   }
@@ -47,6 +49,7 @@ class NearPlaneMetric final : public RunObserver {
   std::vector<char> near_invisible_;
   std::vector<float> prev_opacity_;  // each fragment's in the last snapshot (1: opaque)
   std::vector<int> per_step_;
+  std::vector<int> last_step_;
   int fragment_steps_ = 0;
 };
 

@@ -44,6 +44,11 @@ pre { background: #f6f6f6; border: 1px solid #e2e2e2; padding: 10px 12px; overfl
   font-size: 0.85em; }
 pre.ini { column-width: 26em; column-gap: 2em; }
 pre.ini span { display: block; break-inside: avoid; }
+.viewer-controls { display: flex; flex-wrap: wrap; align-items: center; gap: 6px 14px;
+  margin: 6px 0; font-size: 0.9em; }
+#viewer-time { flex: 1; min-width: 240px; }
+#viewer { width: 100%; }
+#viewer canvas { display: block; width: 100%; border: 1px solid #ccc; touch-action: none; }
 footer { margin-top: 2em; font-size: 0.85em; color: #666; }
 )";
 
@@ -304,8 +309,29 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   return paragraphs;
 }
 
+std::pair<std::string, std::string> report_viewer_pair(const std::vector<Evaluation>& runs) {
+  if (runs.empty()) return {};
+  const Evaluation* none = find_run(runs, "none");
+  const std::string left = none ? none->summary.strategy : runs.front().summary.strategy;
+  std::string right;
+  if (const std::optional<std::size_t> best = best_for_thesis_goals(runs)) {
+    right = runs[*best].summary.strategy;
+  }
+  if (right.empty() || right == left) {
+    right.clear();
+    for (const Evaluation& e : runs) {
+      if (e.summary.strategy != left) {
+        right = e.summary.strategy;
+        break;
+      }
+    }
+  }
+  return {left, right};
+}
+
 std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
-                        const std::optional<SheetFigure>& sheet) {
+                        const std::optional<SheetFigure>& sheet,
+                        const std::string& viewer_section) {
   const std::string name = html_escape(scene.name);
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -330,6 +356,8 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
   h += "<section>\n<h2>Comparison</h2>\n" + results_html(table) + "<div class=\"notes\">\n";
   for (const std::string& n : table_notes(table)) h += "<p>" + n + "</p>\n";
   h += "</div>\n</section>\n";
+
+  h += viewer_section;
 
   h += "<section>\n<h2>Over time</h2>\n<div class=\"charts\">\n";
   for (const ChartSpec& c : charts(scene, runs)) {
@@ -360,7 +388,9 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
 
 std::vector<std::string> write_html_report(const std::string& dir, const Scene& scene,
                                            const std::vector<Evaluation>& runs,
-                                           const FrameRecorder& recorder) {
+                                           const FrameRecorder& recorder,
+                                           const ViewerRecorder& viewer,
+                                           const BundledThreeJs& three) {
   namespace fs = std::filesystem;
   std::vector<std::string> strategies;
   for (const Evaluation& e : runs) strategies.push_back(e.summary.strategy);
@@ -375,7 +405,10 @@ std::vector<std::string> write_html_report(const std::string& dir, const Scene& 
   const std::string table_path = (fs::path(dir) / kTableFile).string();
   write_png(sheet_path, sheet);
   write_file_atomically(table_path, results_csv(results_table(scene, runs), false));
-  write_file_atomically(page_path, html_report(scene, runs, figure));
+  const auto [left, right] = report_viewer_pair(runs);
+  write_file_atomically(
+      page_path,
+      html_report(scene, runs, figure, viewer_section_html(scene, viewer, left, right, three)));
   return {page_path, sheet_path, table_path};
 }
 

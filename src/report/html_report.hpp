@@ -1,9 +1,10 @@
 #pragma once
 // The comparison as one HTML page (fragsim compare --report DIR): the scene, a reading of the
 // numbers in prose, the comparison table (report/results_table.hpp, the terminal's cells; also
-// DIR/table.csv), the per-step metrics as inline SVG line charts, the contact sheet
-// (DIR/sheet.png, beside the page) and the scene's settings. Nothing is fetched:
-// no script, no font, no stylesheet from elsewhere; the page opens from disk.
+// DIR/table.csv), the 3D view of the runs (report_viewer.hpp), the per-step metrics as inline SVG
+// line charts, the contact sheet (DIR/sheet.png, beside the page) and the scene's settings.
+// Nothing is fetched: no script, no font, no stylesheet from elsewhere (three.js is inside the
+// page); the page opens from disk.
 //
 // The page is the same bytes for the same scene and seed: it holds no date and no wall-clock
 // timing (those stay in the terminal report and timing.csv).
@@ -14,6 +15,8 @@
 
 #include "experiments/evaluation.hpp"
 #include "render/frame_recorder.hpp"
+#include "report/bundled_three_js.hpp"
+#include "report/report_viewer.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {
@@ -35,16 +38,25 @@ std::vector<int> report_sheet_steps(const Scene& scene);
 // deviation and occlusion against `none`, or that none met them.
 std::vector<std::string> report_reading(const std::vector<Evaluation>& runs);
 
-// The whole page. `sheet`: the contact sheet beside it, or nullopt for none.
+// The whole page. `sheet`: the contact sheet beside it, or nullopt for none. `viewer_section`: the
+// 3D view's section (viewer_section_html), or empty for none.
 std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
-                        const std::optional<SheetFigure>& sheet);
+                        const std::optional<SheetFigure>& sheet,
+                        const std::string& viewer_section = {});
+
+// The strategies the 3D view shows side by side at first: none (or the first run) on the left,
+// the best for the thesis's goals (or the next run) on the right; right is empty for one run.
+std::pair<std::string, std::string> report_viewer_pair(const std::vector<Evaluation>& runs);
 
 // Draws the contact sheet from `recorder` (rows: the runs' strategies, columns:
 // report_sheet_steps) into DIR/sheet.png, writes the page's table as DIR/table.csv, then
-// DIR/index.html; each file whole or not at all. DIR must exist (prepare_output_dir). Returns the
-// paths written.
+// DIR/index.html with the 3D view of `viewer`'s runs drawn by `three` (without three.js, the
+// section says why instead); each file whole or not at all. DIR must exist (prepare_output_dir).
+// Returns the paths written.
 std::vector<std::string> write_html_report(const std::string& dir, const Scene& scene,
                                            const std::vector<Evaluation>& runs,
-                                           const FrameRecorder& recorder);
+                                           const FrameRecorder& recorder,
+                                           const ViewerRecorder& viewer,
+                                           const BundledThreeJs& three);
 
 }  // namespace fragsim

@@ -5,6 +5,11 @@ the network logs one), every <img> decoded (naturalWidth > 0), every inline <svg
 nothing outside the report's folder or a data: URI was loaded. Then takes a full-page screenshot
 and checks it is a PNG with more than one colour in it.
 
+The 3D view (three.js on software WebGL: Chromium's SwiftShader, as there is no GPU) must be
+there and draw: its canvas has pixels other than the background, moving the time slider changes
+them (two screenshots of the canvas differ), the camera view draws too, and nothing was logged as
+an error. A page without the view, or whose view reports a failure (no WebGL), fails.
+
 Drives chromedriver over WebDriver (plain HTTP and JSON), with the standard library only.
 Usage: check_report.py PAGE.html SCREENSHOT.png [--width PX] [--chromium PATH]
        [--chromedriver PATH]
@@ -43,9 +48,17 @@ CHROMIUM_FLAGS = [
     "--hide-scrollbars",
     "--force-device-scale-factor=1",
     "--host-resolver-rules=MAP * ~NOTFOUND",
+    # WebGL without a GPU: ANGLE on SwiftShader, Chromium's CPU renderer (--disable-gpu alone
+    # leaves WebGL off, and the 3D view would fail).
+    "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader",
 ]
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+WEBDRIVER_ELEMENT = "element-6066-11e4-a52e-4f735466cecf"
+
+# The 3D view's scene background and the clear colour around a letterboxed camera view.
+VIEWER_BACKGROUND = {(0xf4, 0xf6, 0xf8), (0xff, 0xff, 0xff)}
 PNG_END = b"IEND\xaeB`\x82"  # the IEND chunk's type and CRC: the last 8 bytes of a PNG file
 
 # Runs in the page after it loaded; returns what the checks need.
@@ -160,6 +173,123 @@ def png_problems(png):
     return []
 
 
+def png_pixels(png):
+    """(width, height, rows of (r, g, b) tuples) of an 8-bit RGB or RGBA PNG, as Chromium writes
+    its screenshots."""
+    width, height, depth, colour = struct.unpack(">IIBB", png[16:26])
+    if depth != 8 or colour not in (2, 6):
+        raise RuntimeError("screenshot: PNG of depth %d, colour type %d" % (depth, colour))
+    channels = 3 if colour == 2 else 4
+    idat = b""
+    at = 8
+    while at + 8 <= len(png):
+        length, kind = struct.unpack(">I4s", png[at:at + 8])
+        if kind == b"IDAT":
+            idat += png[at + 8:at + 8 + length]
+        at += 12 + length
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows = []
+    previous = bytearray(stride)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for x in range(stride):
+            left = line[x - channels] if x >= channels else 0
+            up = previous[x]
+            corner = previous[x - channels] if x >= channels else 0
+            if kind == 1:
+                line[x] = (line[x] + left) & 255
+            elif kind == 2:
+                line[x] = (line[x] + up) & 255
+            elif kind == 3:
+                line[x] = (line[x] + (left + up) // 2) & 255
+            elif kind == 4:
+                p = left + up - corner
+                pa, pb, pc = abs(p - left), abs(p - up), abs(p - corner)
+                pred = left if pa <= pb and pa <= pc else up if pb <= pc else corner
+                line[x] = (line[x] + pred) & 255
+        rows.append([tuple(line[i:i + 3]) for i in range(0, stride, channels)])
+        previous = line
+    return width, height, rows
+
+
+def drawn_share(rows):
+    """The share of pixels that are not the 3D view's background."""
+    total = sum(len(r) for r in rows)
+    drawn = sum(1 for r in rows for px in r if px not in VIEWER_BACKGROUND)
+    return drawn / max(total, 1)
+
+
+def differing_pixels(a, b):
+    return sum(1 for ra, rb in zip(a, b) for pa, pb in zip(ra, rb) if pa != pb)
+
+
+# Sets the 3D view's controls as a reader would and waits for the frame to be drawn.
+VIEWER_SET = """
+const [id, value] = arguments;
+const control = document.getElementById(id);
+control.value = value;
+control.dispatchEvent(new Event('input'));
+return control.value;
+"""
+
+VIEWER_STATE = """
+const root = document.getElementById('viewer');
+const status = document.getElementById('viewer-status');
+const missing = document.getElementById('viewer-missing');
+return {state: root ? root.dataset.state : null, status: status ? status.textContent : '',
+        missing: missing ? missing.textContent : '',
+        max: root ? document.getElementById('viewer-time').max : '0'};
+"""
+
+
+def canvas_png(driver):
+    found = driver.call("POST", driver.s("/element"),
+                        {"using": "css selector", "value": "#viewer-canvas"})
+    element = found[WEBDRIVER_ELEMENT]
+    return base64.b64decode(driver.call("GET", driver.s("/element/%s/screenshot" % element)))
+
+
+def check_viewer(driver, screenshot):
+    """The 3D view's checks; returns the problems found."""
+    deadline = time.monotonic() + 60
+    state = driver.call("POST", driver.s("/execute/sync"), {"script": VIEWER_STATE, "args": []})
+    while state["state"] == "loading" and time.monotonic() < deadline:
+        time.sleep(0.2)
+        state = driver.call("POST", driver.s("/execute/sync"),
+                            {"script": VIEWER_STATE, "args": []})
+    if state["state"] is None:
+        return ["3D view: not in the page: " + (state["missing"] or "no #viewer element")]
+    if state["state"] != "ready":
+        return ["3D view: %s: %s" % (state["state"], state["status"])]
+    problems = []
+    shots = {}
+    for name, settings in (("start", [("viewer-time", "0")]),
+                           ("middle", [("viewer-time", str(int(state["max"]) // 2))]),
+                           ("camera", [("viewer-mode", "camera")])):
+        for control, value in settings:
+            driver.call("POST", driver.s("/execute/sync"),
+                        {"script": VIEWER_SET, "args": [control, value]})
+        png = canvas_png(driver)
+        shots[name] = png_pixels(png)
+        if name == "middle":
+            with open(screenshot[:-4] + ".3d.png" if screenshot.endswith(".png")
+                      else screenshot + ".3d.png", "wb") as out:
+                out.write(png)
+    for name, (w, h, rows) in shots.items():
+        share = drawn_share(rows)
+        if w < 100 or h < 100:
+            problems.append("3D view: the %s canvas is %dx%d" % (name, w, h))
+        elif share < 0.01:
+            problems.append("3D view: the %s canvas is background (%.4f of its pixels drawn)"
+                            % (name, share))
+    moved = differing_pixels(shots["start"][2], shots["middle"][2])
+    if moved < 50:
+        problems.append("3D view: moving the time slider changed %d pixels" % moved)
+    return problems
+
+
 def check(page, screenshot, width, chromium, chromedriver):
     page = pathlib.Path(page).resolve()
     if not page.is_file():
@@ -217,6 +347,12 @@ def check(page, screenshot, width, chromium, chromedriver):
                                 + link)
         if not facts["images"] and not facts["svgs"]:
             problems.append("page: no image and no chart")
+
+        problems += check_viewer(driver, screenshot)
+        # Errors the 3D view logged while it drew.
+        for entry in browser_log(driver):
+            if entry.get("level") == "SEVERE":
+                problems.append("console error: %s" % entry.get("message", "").strip())
 
         png = full_page_png(driver, min(facts["width"], width), facts["height"])
         with open(screenshot, "wb") as out:
