@@ -147,6 +147,18 @@ def full_page_png(driver, width, height):
         return base64.b64decode(driver.call("GET", driver.s("/screenshot")))
 
 
+def png_idat(png):
+    """The compressed pixel data of `png`: its IDAT chunks joined, in order."""
+    idat = b""
+    at = 8
+    while at + 8 <= len(png):
+        length, kind = struct.unpack(">I4s", png[at:at + 8])
+        if kind == b"IDAT":
+            idat += png[at + 8:at + 8 + length]
+        at += 12 + length
+    return idat
+
+
 def png_problems(png):
     """Why `png` is not a usable screenshot, or [] if it is: the signature, a size, and more than
     one distinct byte in the pixel data (a blank page would be one colour)."""
@@ -155,15 +167,8 @@ def png_problems(png):
     width, height = struct.unpack(">II", png[16:24])
     if width == 0 or height == 0:
         return ["screenshot: empty image %dx%d" % (width, height)]
-    idat = b""
-    at = 8
-    while at + 8 <= len(png):
-        length, kind = struct.unpack(">I4s", png[at:at + 8])
-        if kind == b"IDAT":
-            idat += png[at + 8:at + 8 + length]
-        at += 12 + length
     try:
-        pixels = zlib.decompress(idat)
+        pixels = zlib.decompress(png_idat(png))
     except zlib.error as e:
         return ["screenshot: pixel data does not decompress (%s)" % e]
     # The rows are filtered (each byte minus a prediction from its neighbours), so a one-colour
@@ -180,14 +185,7 @@ def png_pixels(png):
     if depth != 8 or colour not in (2, 6):
         raise RuntimeError("screenshot: PNG of depth %d, colour type %d" % (depth, colour))
     channels = 3 if colour == 2 else 4
-    idat = b""
-    at = 8
-    while at + 8 <= len(png):
-        length, kind = struct.unpack(">I4s", png[at:at + 8])
-        if kind == b"IDAT":
-            idat += png[at + 8:at + 8 + length]
-        at += 12 + length
-    raw = zlib.decompress(idat)
+    raw = zlib.decompress(png_idat(png))
     stride = width * channels
     rows = []
     previous = bytearray(stride)
