@@ -117,170 +117,13 @@ void broadcast3(const Eigen::Vector3d& x, Lanes (&out)[3]) {
   for (int i = 0; i < 3; ++i) out[i] = lanes::broadcast(x[i]);
 }
 
-// ---- The box -----------------------------------------------------------------------------------
+// ---- Two widths ---------------------------------------------------------------------------------
 
-// The margin, relative to the path's extent and the box's size: the exact solves find the times a
-// coordinate meets a face to within ~1e-15 of those sizes (in the coordinate); 1e-6 is a
-// million times that, micrometres on a scene's metres.
-constexpr double kBoxMargin = 1e-6;
-
-// The acceleration (halved) shared by the paths of a box test, with the reciprocals its vertex
-// times and roots need: a multiplication instead of a division per path. The times come out
-// within an ulp or two of the quotients, far inside the margin.
-struct BoxAccel {
-  Lanes a[3];
-  Lanes inv_2a[3];  // 1 / (2 a), or 0 where a = 0 (no vertex)
-  Lanes inv_a_z;    // 1 / a_z, or 0
-  bool curved[3];   // a != 0
-  Lanes reach_m;    // |a|_1 t_end^2 + |lo|_1 + |hi|_1: the part of the margin's scale all share
-};
-BoxAccel box_accel(const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
-                   const Eigen::Vector3d& hi_m, double t_end_s) {
-  BoxAccel acc;
-  for (int i = 0; i < 3; ++i) {
-    acc.a[i] = lanes::broadcast(a_mps2[i]);
-    acc.curved[i] = a_mps2[i] != 0.0;
-    acc.inv_2a[i] = lanes::broadcast(acc.curved[i] ? 1.0 / (2.0 * a_mps2[i]) : 0.0);
-  }
-  acc.inv_a_z = acc.inv_2a[2] + acc.inv_2a[2];
-  acc.reach_m = lanes::broadcast(a_mps2.lpNorm<1>() * t_end_s * t_end_s + lo_m.lpNorm<1>() +
-                                 hi_m.lpNorm<1>());
-  return acc;
-}
-
-[[gnu::always_inline]] inline Lanes at(Lanes c0, Lanes c1, Lanes c2, Lanes t) {
-  return c0 + t * (c1 + t * c2);
-}
-
-// Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1]: its range there (the ends,
-// and the vertex where it lies inside) misses the slab. `curved` says c2 != 0 (the same for all
-// paths: the acceleration's component).
-[[gnu::always_inline]] inline Mask misses(Lanes c0, Lanes c1, Lanes c2, Lanes inv_2c2, bool curved,
-                                          Lanes t0, Lanes t1, Lanes lo, Lanes hi) {
-  const Lanes f0 = at(c0, c1, c2, t0);
-  const Lanes f1 = at(c0, c1, c2, t1);
-  Lanes low = lanes::min(f0, f1);
-  Lanes high = lanes::max(f0, f1);
-  if (curved) {
-    const Lanes ts = -c1 * inv_2c2;
-    const Mask vertex_inside = lanes::gt(ts, t0) & lanes::lt(ts, t1);
-    const Lanes fv = lanes::select(vertex_inside, at(c0, c1, c2, ts), f0);
-    low = lanes::min(low, fv);
-    high = lanes::max(high, fv);
-  }
-  return lanes::lt(high, lo) | lanes::gt(low, hi);
-}
-
-// Widens [first, last] to hold t where `ok` and 0 <= t <= t_end.
-[[gnu::always_inline]] inline void include(Mask ok, Lanes t, Lanes t_end, Lanes& first,
-                                           Lanes& last) {
-  const Mask in = ok & lanes::ge(t, Lanes{}) & lanes::le(t, t_end);
-  first = lanes::select(in, lanes::min(first, t), first);
-  last = lanes::select(in, lanes::max(last, t), last);
-}
-
-// The box grown by `grow` and kept `tol` away: lo - grow - tol <= x(t) <= hi + grow + tol. Not
-// usable (never clear) when the margin or the interval is not a finite, non-negative number.
-struct GrownBox {
-  Lanes lo[3];
-  Lanes hi[3];
-  Mask usable;
-};
-[[gnu::always_inline]] inline GrownBox grow_box(const Lanes (&d)[3], const Lanes (&v)[3],
-                                                const Lanes (&lo_m)[3], const Lanes (&hi_m)[3],
-                                                Lanes grow, Lanes t_end, Lanes reach_m) {
-  // The scale bounds every coordinate's reach and the grown box's faces (|lo - grow| <= |lo| +
-  // grow).
-  const Lanes scale = l1(d) + l1(v) * t_end + reach_m + 6.0 * lanes::abs(grow);
-  const Lanes tol = kBoxMargin * scale;
-  GrownBox box;
-  for (int i = 0; i < 3; ++i) {
-    box.lo[i] = lo_m[i] - grow - tol;
-    box.hi[i] = hi_m[i] + grow + tol;
-  }
-  const Lanes zero{};
-  box.usable = lanes::eq(tol - tol, zero) & lanes::ge(t_end, zero);
-  return box;
-}
-
-// The first stage: some coordinate stays outside its slab over the whole interval.
-[[gnu::always_inline]] inline Mask box_ranges_miss(const Lanes (&d)[3], const Lanes (&v)[3],
-                                                   const BoxAccel& acc, const GrownBox& box,
-                                                   Lanes t_end) {
-  const Lanes zero{};
-  Mask miss =
-      misses(d[0], v[0], acc.a[0], acc.inv_2a[0], acc.curved[0], zero, t_end, box.lo[0], box.hi[0]);
-  for (int i = 1; i < 3; ++i) {
-    miss |= misses(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], zero, t_end, box.lo[i],
-                   box.hi[i]);
-  }
-  return miss;
-}
-
-// The second stage: x or y stays outside its slab over the times z is inside its own. Those
-// times lie between the first and the last of: the ends of [0, t_end] where z is inside, and the
-// times z crosses a face (stable quadratic roots).
-[[gnu::always_inline]] inline Mask box_window_miss(const Lanes (&d)[3], const Lanes (&v)[3],
-                                                   const BoxAccel& acc, const GrownBox& box,
-                                                   Lanes t_end) {
-  const Lanes zero{};
-  Lanes first = lanes::broadcast(INFINITY);
-  Lanes last = lanes::broadcast(-INFINITY);
-  for (const Lanes t : {zero, t_end}) {
-    const Lanes z = at(d[2], v[2], acc.a[2], t);
-    include(lanes::ge(z, box.lo[2]) & lanes::le(z, box.hi[2]), t, t_end, first, last);
-  }
-  const Lanes a = acc.a[2];
-  const Lanes b = v[2];
-  for (const Lanes face : {box.lo[2], box.hi[2]}) {
-    const Lanes c = d[2] - face;
-    if (!acc.curved[2]) {
-      include(lanes::ne(b, zero), -c / b, t_end, first, last);
-      continue;
-    }
-    const Lanes disc = b * b - 4.0 * a * c;
-    const Lanes q = -0.5 * (b + lanes::copysign(lanes::sqrt(disc), b));
-    include(lanes::ge(disc, zero), q * acc.inv_a_z, t_end, first, last);
-    include(lanes::ge(disc, zero) & lanes::ne(q, zero), c / q, t_end, first, last);
-  }
-  const Mask window = lanes::le(first, last);
-  // x and y over that window, widened anyway: roots good to rounding, a multiplied reciprocal.
-  const Lanes widen = kBoxMargin * t_end;
-  const Lanes w0 = lanes::max(first - widen, zero);
-  const Lanes w1 = lanes::min(last + widen, t_end);
-  Mask miss = ~window;
-  for (int i = 0; i < 2; ++i) {
-    miss |= window & misses(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], w0, w1, box.lo[i],
-                            box.hi[i]);
-  }
-  return miss;
-}
-
-// Both stages: the box test for two paths at once, each over its own [0, t_end]; reach_m is
-// |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
-[[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
-                                             const BoxAccel& acc, const Lanes (&lo_m)[3],
-                                             const Lanes (&hi_m)[3], Lanes grow, Lanes t_end,
-                                             Lanes reach_m) {
-  const GrownBox box = grow_box(d, v, lo_m, hi_m, grow, t_end, reach_m);
-  const Mask by_ranges = box.usable & box_ranges_miss(d, v, acc, box, t_end);
-  // The window's roots only where the ranges left a path in doubt: the same answer, cheaper.
-  if (lanes::bits(by_ranges) == 3) return by_ranges;
-  return by_ranges | (box.usable & box_window_miss(d, v, acc, box, t_end));
-}
-[[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
-                                             const BoxAccel& acc, const Lanes (&lo_m)[3],
-                                             const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
-  return box_clear(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m);
-}
-
-// ---- edge-min's two boxes ----------------------------------------------------------------------
-
-// The first tier runs over every fragment, so it comes in two widths: two lanes (SSE2, lanes.hpp)
-// and, where the processor has AVX2, four, through GCC's vector extension in a function compiled
-// for AVX2 (chosen at run time). Both are the same template over the operations below, so the
-// same IEEE operations in the same order (no FMA: -ffp-contract=off, and "avx2" does not enable
-// it): the same answers, bit for bit, whatever the width.
+// edge-min's two-box rejection runs over every fragment, so it comes in two widths: two lanes
+// (SSE2, lanes.hpp) and, where the processor has AVX2, four, through GCC's vector extension in a
+// function compiled for AVX2 (chosen at run time). Both are the same templates over the
+// operations below, so the same IEEE operations in the same order (no FMA: -ffp-contract=off, and
+// "avx2" does not enable it): the same answers, bit for bit, whatever the width.
 struct NarrowOps {
   using V = Lanes;
   using M = Mask;
@@ -295,6 +138,11 @@ struct NarrowOps {
   static V min(V a, V b) { return lanes::min(a, b); }
   static V max(V a, V b) { return lanes::max(a, b); }
   static V abs(V x) { return lanes::abs(x); }
+  static M eq(V a, V b) { return lanes::eq(a, b); }
+  static M ne(V a, V b) { return lanes::ne(a, b); }
+  static M none_of(M m) { return ~m; }
+  static V sqrt(V x) { return lanes::sqrt(x); }
+  static V copysign(V mag, V sign) { return lanes::copysign(mag, sign); }
   static int bits(M m) { return lanes::bits(m); }
 };
 
@@ -340,11 +188,205 @@ struct WideOps {
     const WideMask magnitude = WideMask{} + INT64_MAX;
     return reinterpret_cast<V>(reinterpret_cast<WideMask>(x) & magnitude);
   }
+  [[gnu::always_inline]] static M eq(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a == b)};
+  }
+  [[gnu::always_inline]] static M ne(const V& a, const V& b) {
+    return {reinterpret_cast<WideMask>(a != b)};
+  }
+  [[gnu::always_inline]] static M none_of(const M& m) { return {~m.bits}; }
+  // Two SSE2 halves: an AVX intrinsic here could not be inlined into the generic templates that
+  // call it (each square root correctly rounded either way).
+  [[gnu::always_inline]] static V sqrt(const V& x) {
+    const Lanes lo = lanes::sqrt(Lanes{x[0], x[1]});
+    const Lanes hi = lanes::sqrt(Lanes{x[2], x[3]});
+    return V{lo[0], lo[1], hi[0], hi[1]};
+  }
+  // As lanes::copysign: the magnitude's bits but the sign bit, and the sign's sign bit.
+  [[gnu::always_inline]] static V copysign(const V& mag, const V& sign) {
+    const WideMask magnitude = WideMask{} + INT64_MAX;
+    return reinterpret_cast<V>((reinterpret_cast<WideMask>(mag) & magnitude) |
+                               (reinterpret_cast<WideMask>(sign) & ~magnitude));
+  }
   [[gnu::always_inline]] static int bits(const M& m) {
     return static_cast<int>((m.bits[0] & 1) | (m.bits[1] & 2) | (m.bits[2] & 4) | (m.bits[3] & 8));
   }
 };
 #endif
+
+// ---- The box -----------------------------------------------------------------------------------
+
+// The margin, relative to the path's extent and the box's size: the exact solves find the times a
+// coordinate meets a face to within ~1e-15 of those sizes (in the coordinate); 1e-6 is a
+// million times that, micrometres on a scene's metres.
+constexpr double kBoxMargin = 1e-6;
+
+// The acceleration (halved) shared by the paths of a box test, with the reciprocals its vertex
+// times and roots need: a multiplication instead of a division per path. The times come out
+// within an ulp or two of the quotients, far inside the margin. In lanes of either width.
+template <class O>
+struct BoxAccelOf {
+  using V = typename O::V;
+  V a[3];
+  V inv_2a[3];     // 1 / (2 a), or 0 where a = 0 (no vertex)
+  V inv_a_z;       // 1 / a_z, or 0
+  bool curved[3];  // a != 0
+  V reach_m;       // |a|_1 t_end^2 + |lo|_1 + |hi|_1: the part of the margin's scale all share
+};
+using BoxAccel = BoxAccelOf<NarrowOps>;
+BoxAccel box_accel(const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
+                   const Eigen::Vector3d& hi_m, double t_end_s) {
+  BoxAccel acc;
+  for (int i = 0; i < 3; ++i) {
+    acc.a[i] = lanes::broadcast(a_mps2[i]);
+    acc.curved[i] = a_mps2[i] != 0.0;
+    acc.inv_2a[i] = lanes::broadcast(acc.curved[i] ? 1.0 / (2.0 * a_mps2[i]) : 0.0);
+  }
+  acc.inv_a_z = acc.inv_2a[2] + acc.inv_2a[2];
+  acc.reach_m = lanes::broadcast(a_mps2.lpNorm<1>() * t_end_s * t_end_s + lo_m.lpNorm<1>() +
+                                 hi_m.lpNorm<1>());
+  return acc;
+}
+
+template <class O>
+[[gnu::always_inline]] inline typename O::V l1_of(const typename O::V (&x)[3]) {
+  return O::abs(x[0]) + O::abs(x[1]) + O::abs(x[2]);
+}
+
+template <class V>
+[[gnu::always_inline]] inline V at(V c0, V c1, V c2, V t) {
+  return c0 + t * (c1 + t * c2);
+}
+
+// Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1]: its range there (the ends,
+// and the vertex where it lies inside) misses the slab. `curved` says c2 != 0 (the same for all
+// paths: the acceleration's component).
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M misses(V c0, V c1, V c2, V inv_2c2, bool curved, V t0,
+                                                   V t1, V lo, V hi) {
+  const V f0 = at(c0, c1, c2, t0);
+  const V f1 = at(c0, c1, c2, t1);
+  V low = O::min(f0, f1);
+  V high = O::max(f0, f1);
+  if (curved) {
+    const V ts = -c1 * inv_2c2;
+    const typename O::M vertex_inside = O::gt(ts, t0) & O::lt(ts, t1);
+    const V fv = O::select(vertex_inside, at(c0, c1, c2, ts), f0);
+    low = O::min(low, fv);
+    high = O::max(high, fv);
+  }
+  return O::lt(high, lo) | O::gt(low, hi);
+}
+
+// Widens [first, last] to hold t where `ok` and 0 <= t <= t_end.
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline void include(typename O::M ok, V t, V t_end, V& first, V& last) {
+  const typename O::M in = ok & O::ge(t, V{}) & O::le(t, t_end);
+  first = O::select(in, O::min(first, t), first);
+  last = O::select(in, O::max(last, t), last);
+}
+
+// The box grown by `grow` and kept `tol` away: lo - grow - tol <= x(t) <= hi + grow + tol. Not
+// usable (never clear) when the margin or the interval is not a finite, non-negative number.
+template <class O>
+struct GrownBox {
+  typename O::V lo[3];
+  typename O::V hi[3];
+  typename O::M usable;
+};
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline GrownBox<O> grow_box(const V (&d)[3], const V (&v)[3],
+                                                   const V (&lo_m)[3], const V (&hi_m)[3], V grow,
+                                                   V t_end, V reach_m) {
+  // The scale bounds every coordinate's reach and the grown box's faces (|lo - grow| <= |lo| +
+  // grow).
+  const V scale = l1_of<O>(d) + l1_of<O>(v) * t_end + reach_m + 6.0 * O::abs(grow);
+  const V tol = kBoxMargin * scale;
+  GrownBox<O> box;
+  for (int i = 0; i < 3; ++i) {
+    box.lo[i] = lo_m[i] - grow - tol;
+    box.hi[i] = hi_m[i] + grow + tol;
+  }
+  const V zero{};
+  box.usable = O::eq(tol - tol, zero) & O::ge(t_end, zero);
+  return box;
+}
+
+// The first stage: some coordinate stays outside its slab over the whole interval.
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_ranges_miss(const V (&d)[3], const V (&v)[3],
+                                                            const BoxAccelOf<O>& acc,
+                                                            const GrownBox<O>& box, V t_end) {
+  const V zero{};
+  typename O::M miss = misses<O>(d[0], v[0], acc.a[0], acc.inv_2a[0], acc.curved[0], zero, t_end,
+                                 box.lo[0], box.hi[0]);
+  for (int i = 1; i < 3; ++i) {
+    miss = miss | misses<O>(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], zero, t_end,
+                            box.lo[i], box.hi[i]);
+  }
+  return miss;
+}
+
+// The second stage: x or y stays outside its slab over the times z is inside its own. Those
+// times lie between the first and the last of: the ends of [0, t_end] where z is inside, and the
+// times z crosses a face (stable quadratic roots).
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_window_miss(const V (&d)[3], const V (&v)[3],
+                                                            const BoxAccelOf<O>& acc,
+                                                            const GrownBox<O>& box, V t_end) {
+  const V zero{};
+  V first = O::splat(INFINITY);
+  V last = O::splat(-INFINITY);
+  for (const V t : {zero, t_end}) {
+    const V z = at(d[2], v[2], acc.a[2], t);
+    include<O>(O::ge(z, box.lo[2]) & O::le(z, box.hi[2]), t, t_end, first, last);
+  }
+  const V a = acc.a[2];
+  const V b = v[2];
+  for (const V face : {box.lo[2], box.hi[2]}) {
+    const V c = d[2] - face;
+    if (!acc.curved[2]) {
+      include<O>(O::ne(b, zero), -c / b, t_end, first, last);
+      continue;
+    }
+    const V disc = b * b - 4.0 * a * c;
+    const V q = -0.5 * (b + O::copysign(O::sqrt(disc), b));
+    include<O>(O::ge(disc, zero), q * acc.inv_a_z, t_end, first, last);
+    include<O>(O::ge(disc, zero) & O::ne(q, zero), c / q, t_end, first, last);
+  }
+  const typename O::M window = O::le(first, last);
+  // x and y over that window, widened anyway: roots good to rounding, a multiplied reciprocal.
+  const V widen = kBoxMargin * t_end;
+  const V w0 = O::max(first - widen, zero);
+  const V w1 = O::min(last + widen, t_end);
+  typename O::M miss = O::none_of(window);
+  for (int i = 0; i < 2; ++i) {
+    miss = miss | (window & misses<O>(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], w0, w1,
+                                      box.lo[i], box.hi[i]));
+  }
+  return miss;
+}
+
+// Both stages: the box test for a lane's worth of paths at once, each over its own [0, t_end];
+// reach_m is |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_clear(const V (&d)[3], const V (&v)[3],
+                                                      const BoxAccelOf<O>& acc, const V (&lo_m)[3],
+                                                      const V (&hi_m)[3], V grow, V t_end,
+                                                      V reach_m) {
+  const GrownBox<O> box = grow_box<O>(d, v, lo_m, hi_m, grow, t_end, reach_m);
+  const typename O::M by_ranges = box.usable & box_ranges_miss<O>(d, v, acc, box, t_end);
+  // The window's roots only where the ranges left a path in doubt: the same answer, cheaper.
+  if (O::bits(by_ranges) == (1 << O::kWidth) - 1) return by_ranges;
+  return by_ranges | (box.usable & box_window_miss<O>(d, v, acc, box, t_end));
+}
+[[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
+                                             const BoxAccel& acc, const Lanes (&lo_m)[3],
+                                             const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
+  return box_clear<NarrowOps>(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m);
+}
+
+// ---- edge-min's two boxes ----------------------------------------------------------------------
 
 // An upper bound, without a division or a square root, on the interval edge-min's solve gives
 // a path (cheap_rejection.hpp): max(min(g, cap), floor), g = EdgeMinStrategy::time_to_ground_s,
@@ -570,6 +612,96 @@ std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const First
   return first_tier<NarrowOps>(f, n, p, 0, doubt, r_max);
 }
 
+// Everything the second tier needs, in lanes of either width.
+template <class O>
+struct SecondTierOf {
+  using V = typename O::V;
+  V origin[3];
+  V frame_v[3];
+  V grown_v[3];
+  V axes[3][3];
+  BoxAccelOf<O> acc;
+  BoxAccelOf<O> grown_acc;
+  V a_l1;
+  V window;
+  V lo[3];
+  V hi[3];
+  V glo[3];
+  V ghi[3];
+};
+using SecondTier = SecondTierOf<NarrowOps>;
+
+// Where the second tier writes its answers. Raw pointers: a store through a char may alias
+// anything, the vectors' own pointers included.
+struct Answers {
+  char* clears;
+  char* grown_clears;
+  std::int32_t* unsettled;
+  std::size_t unsettled_count;
+};
+
+template <class V>
+[[gnu::always_inline]] inline V dot3(const V (&x)[3], const V (&y)[3]) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+// The second tier for a lane's worth of fragments (index[k] in lane k), given their states and
+// the first tier's answer: the box tests in the frame's axes, each over the fragment's interval
+// (the first tier's bound on it) and, for the grown box, the window within it. Each lane's
+// answer is its own, whatever its neighbours; only the lanes in `live` are written, in order.
+template <class O>
+[[gnu::always_inline]] inline void second_tier(const SecondTierOf<O>& q, const Gathered<O>& g,
+                                               const Far<O>& far,
+                                               const std::size_t (&index)[O::kWidth], int live,
+                                               Answers& out) {
+  using V = typename O::V;
+  constexpr int all = (1 << O::kWidth) - 1;
+  V d[3];
+  V w[3];
+  V wg[3];
+  for (int c = 0; c < 3; ++c) {
+    const V rel[3] = {g.p[0] - q.origin[0], g.p[1] - q.origin[1], g.p[2] - q.origin[2]};
+    const V rv[3] = {g.v[0] - q.frame_v[0], g.v[1] - q.frame_v[1], g.v[2] - q.frame_v[2]};
+    const V rvg[3] = {g.v[0] - q.grown_v[0], g.v[1] - q.grown_v[1], g.v[2] - q.grown_v[2]};
+    d[c] = dot3(rel, q.axes[c]);
+    w[c] = dot3(rv, q.axes[c]);
+    wg[c] = dot3(rvg, q.axes[c]);
+  }
+  const V t = far.t;
+  int box_bits = O::bits(far.box);
+  if (box_bits != all) {
+    const V reach = q.a_l1 * (t * t) + q.acc.reach_m;
+    box_bits |= O::bits(box_clear<O>(d, w, q.acc, q.lo, q.hi, g.radius, t, reach));
+  }
+  int grown_bits = O::bits(far.grown);
+  if (grown_bits != all) {
+    const V tg = O::min(q.window, t);
+    const V reach = q.a_l1 * (tg * tg) + q.grown_acc.reach_m;
+    grown_bits |= O::bits(box_clear<O>(d, wg, q.grown_acc, q.glo, q.ghi, g.radius, tg, reach));
+  }
+  const int settled = box_bits & grown_bits;
+  for (int k = 0; k < O::kWidth; ++k) {
+    if (((live >> k) & 1) == 0) continue;
+    const std::size_t i = index[k];
+    out.clears[i] = static_cast<char>((box_bits >> k) & 1);
+    out.grown_clears[i] = static_cast<char>((grown_bits >> k) & 1);
+    out.unsettled[out.unsettled_count] = static_cast<std::int32_t>(i);
+    out.unsettled_count += static_cast<std::size_t>(1 - ((settled >> k) & 1));
+  }
+}
+
+// The second tier over the fragments the first left in doubt (ascending), two at a time.
+void second_tier_over(const FragmentState* f, const FirstTier& p, const SecondTier& q,
+                      const std::int32_t* doubt, std::size_t doubts, Answers& out) {
+  for (std::size_t j = 0; j < doubts; j += lanes::kWidth) {
+    const std::size_t j1 = std::min(j + 1, doubts - 1);
+    const std::size_t index[2] = {static_cast<std::size_t>(doubt[j]),
+                                  static_cast<std::size_t>(doubt[j1])};
+    const Gathered<NarrowOps> g = gather<NarrowOps>(f, [&](int k) { return index[k]; });
+    second_tier<NarrowOps>(q, g, first_tier_test<NarrowOps>(p, g), index, j1 > j ? 3 : 1, out);
+  }
+}
+
 #if defined(FRAGSIM_WIDE_LANES)
 // Four fragments' states when each one's position and velocity are six consecutive doubles
 // (`packed`): one load of four and one of two per fragment, transposed, instead of a load per
@@ -601,14 +733,56 @@ std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const First
   return g;
 }
 
+// The second tier's constants, four lanes wide (each is the same number in every lane).
+[[gnu::target("avx2"), gnu::always_inline]] inline Wide widen(Lanes x) {
+  return WideOps::splat(x[0]);
+}
+template <int N>
+[[gnu::target("avx2"), gnu::always_inline]] inline void widen(const Lanes (&x)[N], Wide (&out)[N]) {
+  for (int c = 0; c < N; ++c) out[c] = widen(x[c]);
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline BoxAccelOf<WideOps> widen(const BoxAccel& a) {
+  BoxAccelOf<WideOps> w;
+  widen(a.a, w.a);
+  widen(a.inv_2a, w.inv_2a);
+  w.inv_a_z = widen(a.inv_a_z);
+  for (int c = 0; c < 3; ++c) w.curved[c] = a.curved[c];
+  w.reach_m = widen(a.reach_m);
+  return w;
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline SecondTierOf<WideOps> widen(
+    const SecondTier& q) {
+  SecondTierOf<WideOps> w;
+  widen(q.origin, w.origin);
+  widen(q.frame_v, w.frame_v);
+  widen(q.grown_v, w.grown_v);
+  for (int c = 0; c < 3; ++c) widen(q.axes[c], w.axes[c]);
+  w.acc = widen(q.acc);
+  w.grown_acc = widen(q.grown_acc);
+  w.a_l1 = widen(q.a_l1);
+  w.window = widen(q.window);
+  widen(q.lo, w.lo);
+  widen(q.hi, w.hi);
+  widen(q.glo, w.glo);
+  widen(q.ghi, w.ghi);
+  return w;
+}
+
 // Whole groups of four here (the mask's bits by AVX's own instruction, which only code compiled
-// for AVX may use), the rest two at a time.
-[[gnu::target("avx2")]] std::size_t first_tier_wide(const FragmentState* f, std::size_t n,
+// for AVX may use), each group's doubts through the second tier at once, from the states and
+// first-tier answers already in registers (in flight, when nearly every fragment is in doubt,
+// that is one pass instead of two). The rest two at a time through the first tier, their doubts
+// listed in `doubt` for second_tier_over; the count of those is returned, every doubt's in
+// *doubts.
+[[gnu::target("avx2")]] std::size_t both_tiers_wide(const FragmentState* f, std::size_t n,
                                                     const FirstTier& p, bool packed,
-                                                    std::int32_t* doubt, double* r_max) {
+                                                    const SecondTier& q, Answers& out,
+                                                    std::int32_t* doubt, double* r_max,
+                                                    std::size_t* doubts) {
   using O = WideOps;
+  const SecondTierOf<O> wq = widen(q);
   O::V r = O::splat(0.0);
-  std::size_t doubts = 0;
+  std::size_t wide_doubts = 0;
   std::size_t i = 0;
   for (; i + O::kWidth <= n; i += O::kWidth) {
     const Gathered<O> g = packed ? gather_packed(f + i) : gather<O>(f + i, [](int k) { return k; });
@@ -617,19 +791,20 @@ std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const First
     const int open =
         ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
     if (open == 0) continue;  // the usual case once the debris has settled
-    for (int k = 0; k < O::kWidth; ++k) {
-      doubt[doubts] = static_cast<std::int32_t>(i + static_cast<std::size_t>(k));
-      doubts += static_cast<std::size_t>((open >> k) & 1);
-    }
+    wide_doubts += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
+    const std::size_t index[O::kWidth] = {i, i + 1, i + 2, i + 3};
+    second_tier<O>(wq, g, far, index, open, out);
   }
   double rest = 0.0;
-  if (i < n) doubts += first_tier<NarrowOps>(f + i, n - i, p, i, doubt + doubts, &rest);
+  std::size_t tail_doubts = 0;
+  if (i < n) tail_doubts = first_tier<NarrowOps>(f + i, n - i, p, i, doubt, &rest);
   double lanes_r[O::kWidth];
   std::memcpy(lanes_r, &r, sizeof lanes_r);
-  double out = rest;
-  for (const double x : lanes_r) out = std::max(out, x);
-  *r_max = out;
-  return doubts;
+  double out_r = rest;
+  for (const double x : lanes_r) out_r = std::max(out_r, x);
+  *r_max = out_r;
+  *doubts = wide_doubts + tail_doubts;
+  return tail_doubts;
 }
 #endif
 // -Wpsabi stays off to the end of the file: the templates above are instantiated there.
@@ -804,8 +979,9 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
     const Lanes tol = kBoxMargin * (axes_norm * (l1(p.rel) + l1(p.rel_v) * t_end) + acc.reach_m +
                                     6.0 * lanes::abs(p.radius));
     const Mask usable = lanes::eq(tol - tol, Lanes{}) & lanes::ge(t_end, Lanes{});
-    const Mask clear = usable & misses(x0, vx, acc.a[0], acc.inv_2a[0], acc.curved[0], Lanes{},
-                                       t_end, lo[0] - p.radius - tol, hi[0] + p.radius + tol);
+    const Mask clear =
+        usable & misses<NarrowOps>(x0, vx, acc.a[0], acc.inv_2a[0], acc.curved[0], Lanes{}, t_end,
+                                   lo[0] - p.radius - tol, hi[0] + p.radius + tol);
     const int bits = lanes::bits(clear);
     clears_[i] = static_cast<char>(bits & 1);
     doubt_[doubts] = static_cast<std::int32_t>(i);
@@ -890,94 +1066,43 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   p.ground = boxes.ground_m;
   p.window = boxes.window_s;
 
-  // The first tier, over every fragment.
+  // The second tier's constants, for the fragments the first leaves in doubt.
+  SecondTier q;
+  broadcast3(frame.origin_m, q.origin);
+  broadcast3(frame.velocity_mps, q.frame_v);
+  broadcast3(boxes.grown_velocity_mps, q.grown_v);
+  for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], q.axes[c]);
+  q.acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
+  q.grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
+  q.a_l1 = lanes::broadcast(boxes.a_mps2.lpNorm<1>());
+  q.window = lanes::broadcast(boxes.window_s);
+  broadcast3(boxes.lo_m, q.lo);
+  broadcast3(boxes.hi_m, q.hi);
+  broadcast3(grown_lo, q.glo);
+  broadcast3(grown_hi, q.ghi);
+  Answers out{clears_.data(), grown_clears_.data(), unsettled_.data(), 0};
+
+  // The first tier over every fragment, the second over those it leaves in doubt: the second tier
+  // tests the box in the frame's axes, each over the fragment's interval (the first tier's bound
+  // on it) and, for the grown box, the window within it.
   std::int32_t* const doubt = doubt_.data();
-  std::size_t doubts = 0;
+  std::size_t listed = 0;  // doubts listed in doubt_ for second_tier_over
 #if defined(FRAGSIM_WIDE_LANES)
   if (wide_) {
     const FragmentState& f0 = fragments[0];
     const bool packed = f0.velocity_mps.data() == f0.position_m.data() + 3;
-    doubts = first_tier_wide(fragments.data(), n, p, packed, doubt, &max_radius_m_);
+    listed =
+        both_tiers_wide(fragments.data(), n, p, packed, q, out, doubt, &max_radius_m_, &doubts_);
   } else {
-    doubts = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+    listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+    doubts_ = listed;
   }
 #else
-  doubts = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+  listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
+  doubts_ = listed;
 #endif
-
-  doubts_ = doubts;
-
-  // The second tier, over the rest, two at a time: the first tier's answer again (it settles
-  // one box of many of them), then the box tests in the frame's axes, each over the fragment's
-  // interval (the first tier's bound on it) and, for the grown box, the window within it.
-  Lanes origin[3];
-  Lanes frame_v[3];
-  Lanes grown_v[3];
-  Lanes axes[3][3];
-  broadcast3(frame.origin_m, origin);
-  broadcast3(frame.velocity_mps, frame_v);
-  broadcast3(boxes.grown_velocity_mps, grown_v);
-  for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], axes[c]);
-  const BoxAccel acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
-  const BoxAccel grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
-  const Lanes a_l1 = lanes::broadcast(boxes.a_mps2.lpNorm<1>());
-  const Lanes window = lanes::broadcast(boxes.window_s);
-  Lanes lo[3];
-  Lanes hi[3];
-  Lanes glo[3];
-  Lanes ghi[3];
-  broadcast3(boxes.lo_m, lo);
-  broadcast3(boxes.hi_m, hi);
-  broadcast3(grown_lo, glo);
-  broadcast3(grown_hi, ghi);
-  // Raw pointers: a store through a char may alias anything, the vectors' own pointers included.
-  char* const clears = clears_.data();
-  char* const grown_clears = grown_clears_.data();
-  std::int32_t* const unsettled = unsettled_.data();
-  std::size_t unsettled_count = 0;
-  for (std::size_t j = 0; j < doubts; j += lanes::kWidth) {
-    const std::size_t j1 = std::min(j + 1, doubts - 1);
-    const std::size_t i0 = static_cast<std::size_t>(doubt[j]);
-    const std::size_t i1 = static_cast<std::size_t>(doubt[j1]);
-    const Gathered<NarrowOps> g =
-        gather<NarrowOps>(fragments.data(), [&](int k) { return k == 0 ? i0 : i1; });
-    const Far<NarrowOps> far = first_tier_test<NarrowOps>(p, g);
-    const Lanes t = far.t;
-    Lanes d[3];
-    Lanes w[3];
-    Lanes wg[3];
-    for (int c = 0; c < 3; ++c) {
-      const Lanes rel[3] = {g.p[0] - origin[0], g.p[1] - origin[1], g.p[2] - origin[2]};
-      const Lanes rv[3] = {g.v[0] - frame_v[0], g.v[1] - frame_v[1], g.v[2] - frame_v[2]};
-      const Lanes rvg[3] = {g.v[0] - grown_v[0], g.v[1] - grown_v[1], g.v[2] - grown_v[2]};
-      d[c] = dot(rel, axes[c]);
-      w[c] = dot(rv, axes[c]);
-      wg[c] = dot(rvg, axes[c]);
-    }
-    int box_bits = lanes::bits(far.box);
-    if (box_bits != 3) {
-      const Lanes reach = a_l1 * (t * t) + acc.reach_m;
-      box_bits |= lanes::bits(box_clear(d, w, acc, lo, hi, g.radius, t, reach));
-    }
-    int grown_bits = lanes::bits(far.grown);
-    if (grown_bits != 3) {
-      const Lanes tg = lanes::min(window, t);
-      const Lanes reach = a_l1 * (tg * tg) + grown_acc.reach_m;
-      grown_bits |= lanes::bits(box_clear(d, wg, grown_acc, glo, ghi, g.radius, tg, reach));
-    }
-    clears[i0] = static_cast<char>(box_bits & 1);
-    grown_clears[i0] = static_cast<char>(grown_bits & 1);
-    clears[i1] = static_cast<char>((box_bits >> 1) & 1);
-    grown_clears[i1] = static_cast<char>((grown_bits >> 1) & 1);
-    const int settled = box_bits & grown_bits;
-    unsettled[unsettled_count] = static_cast<std::int32_t>(i0);
-    unsettled_count += static_cast<std::size_t>(1 - (settled & 1));
-    if (j1 > j) {
-      unsettled[unsettled_count] = static_cast<std::int32_t>(i1);
-      unsettled_count += static_cast<std::size_t>(1 - ((settled >> 1) & 1));
-    }
-  }
-  unsettled_count_ = unsettled_count;
+  second_tier_over(fragments.data(), p, q, doubt, listed, out);
+  unsettled_count_ = out.unsettled_count;
 }
 
 }  // namespace fragsim

@@ -228,17 +228,59 @@ Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double 
   return any ? out : piece(0.0, t_end);  // t_end = 0: the one instant
 }
 
-// The worst case's threat and its least pushes along +up, -up, +right, -right (the order of
-// `dir` in step()), for a push that starts `delay_s` from now.
-struct WorstCase {
+// Where the worst case's path lies inside the grown boxes: per axis the times inside every
+// constraint's grown slab, and the two pairs of axes the ways out are sampled over. Kept apart
+// from the pushes (WayNeeds below) because most candidates need only this and one way's push.
+struct GrownSets {
+  std::array<Intervals, 3> in;
+  Intervals in_xz;  // a push along y must clear the box while x and z are inside
+  Intervals in_yz;  // a push along x, while y and z are
   bool threat = false;
-  std::array<double, 4> need{};
 };
 
+// The times in [0, t_end] at which axis k is inside every constraint's grown slab.
+Intervals axis_set(std::span<const Constraint> cons, int k, const Slabs& slabs, double t_end) {
+  Intervals set = within_grown(cons[0], k, slabs, t_end);
+  for (std::size_t j = 1; j < cons.size() && !set.empty(); ++j) {
+    set = intersect(set, within_grown(cons[j], k, slabs, t_end));
+  }
+  return set;
+}
+
+void join_axes(GrownSets& s) {
+  s.threat = false;
+  for (const Intervals& set : s.in) {
+    if (set.empty()) return;
+  }
+  s.in_xz = intersect(s.in[0], s.in[2]);
+  s.in_yz = intersect(s.in[1], s.in[2]);
+  s.threat = !intersect(s.in_xz, s.in[1]).empty();
+}
+
+GrownSets grown_sets(std::span<const Constraint> cons, const Slabs& slabs, double t_end) {
+  GrownSets s;
+  for (int k = 0; k < 3; ++k) {
+    s.in[static_cast<std::size_t>(k)] = axis_set(cons, k, slabs, t_end);
+    if (s.in[static_cast<std::size_t>(k)].empty()) return s;
+  }
+  join_axes(s);
+  return s;
+}
+
 // least_accel against the intersection of the constraints' grown boxes: outside any one of them
-// at time t is a miss, so the gap to cover is the least over them.
+// at time t is a miss, so the gap to cover is the least over them. Stops as soon as the need
+// passes stop_above (the caller then only learns that it did).
 double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m, int sign,
-                         const Intervals& when, double dt, double delay_s) {
+                         const Intervals& when, double dt, double delay_s,
+                         double stop_above = kInf) {
+  // Each constraint's side: its turn cap and the knee where its growth flattens, once.
+  std::array<double, 2> cap_m{};
+  std::array<double, 2> knee_s{};
+  const std::size_t n_cons = std::min(cons.size(), cap_m.size());
+  for (std::size_t j = 0; j < n_cons; ++j) {
+    cap_m[j] = cons[j].rho.cap_m(k, sign);
+    knee_s[j] = cons[j].rho.knee_s(cap_m[j]);
+  }
   double need = 0.0;
   for (int i = 0; i < when.n; ++i) {
     const double a = when.span[static_cast<std::size_t>(i)][0];
@@ -246,40 +288,39 @@ double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m,
     for (int s = 0; s <= 8; ++s) {
       const double t = a + (b - a) * s / 8.0;
       double gap = kInf;
-      for (const Constraint& con : cons) {
-        gap = std::min(gap, edge_m + con.rho.at(t, con.rho.cap_m(k, sign)) -
+      for (std::size_t j = 0; j < n_cons; ++j) {
+        const Constraint& con = cons[j];
+        gap = std::min(gap, edge_m + con.rho.piece(cap_m[j], t >= knee_s[j]).at(t) -
                                 sign * con.axis[static_cast<std::size_t>(k)].at(t));
       }
       if (!(gap > 0.0)) continue;
       const double per_accel = EdgeMinStrategy::displacement_per_accel(t - delay_s, dt);
       if (per_accel <= 0.0) return kInf;  // no push started by then helps
       need = std::max(need, gap / per_accel);
+      if (need > stop_above) return need;
     }
   }
   return need;
 }
 
-WorstCase worst_case(std::span<const Constraint> cons, const Slabs& slabs, double t_end, double dt,
-                     double delay_s) {
-  std::array<Intervals, 3> in;
-  for (int k = 0; k < 3; ++k) {
-    Intervals& set = in[static_cast<std::size_t>(k)];
-    set = within_grown(cons[0], k, slabs, t_end);
-    for (std::size_t j = 1; j < cons.size() && !set.empty(); ++j) {
-      set = intersect(set, within_grown(cons[j], k, slabs, t_end));
-    }
-    if (set.empty()) return {};
-  }
-  const Intervals in_xz = intersect(in[0], in[2]);
-  const Intervals in_yz = intersect(in[1], in[2]);
-  if (intersect(in_xz, in[1]).empty()) return {};
-  WorstCase wc;
-  wc.threat = true;
-  wc.need = {least_accel_grown(cons, 1, slabs.hi[1], +1, in_xz, dt, delay_s),
-             least_accel_grown(cons, 1, -slabs.lo[1], -1, in_xz, dt, delay_s),
-             least_accel_grown(cons, 0, slabs.hi[0], +1, in_yz, dt, delay_s),
-             least_accel_grown(cons, 0, -slabs.lo[0], -1, in_yz, dt, delay_s)};
-  return wc;
+// The least push along way w (+up, -up, +right, -right: the order of `dir` in step()) that takes
+// the worst case out of the grown boxes, for a push that starts delay_s from now.
+double way_need(std::span<const Constraint> cons, const GrownSets& sets, const Slabs& slabs,
+                std::size_t way, double dt, double delay_s, double stop_above = kInf) {
+  const int k = way < 2 ? 1 : 0;
+  const int sign = way % 2 == 0 ? +1 : -1;
+  const double edge_m =
+      sign > 0 ? slabs.hi[static_cast<std::size_t>(k)] : -slabs.lo[static_cast<std::size_t>(k)];
+  return least_accel_grown(cons, k, edge_m, sign, k == 1 ? sets.in_xz : sets.in_yz, dt, delay_s,
+                           stop_above);
+}
+
+std::array<double, 4> way_needs(std::span<const Constraint> cons, const GrownSets& sets,
+                                const Slabs& slabs, double dt, double delay_s) {
+  std::array<double, 4> need{};
+  for (std::size_t w = 0; w < need.size(); ++w)
+    need[w] = way_need(cons, sets, slabs, w, dt, delay_s);
+  return need;
 }
 
 // The latest time-to-threat at which a robust model may still have to act: beyond it, a push of
@@ -349,17 +390,6 @@ std::size_t chosen(const std::array<double, 4>& need, const std::array<double, 4
     }
   }
   return best;
-}
-
-// The least need among the allowed ways: whether some allowed way is still within reach.
-double least_allowed(const std::array<double, 4>& need, const std::array<double, 4>& weight,
-                     bool weighted) {
-  if (!weighted) return need[smallest(need)];
-  double least = kInf;
-  for (std::size_t k = 0; k < 4; ++k) {
-    if (weight[k] > 0.0) least = std::min(least, need[k]);
-  }
-  return least;
 }
 
 }  // namespace
@@ -625,28 +655,40 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                                Coord{d.z(), v.z(), half_g.z()}},
                               ball_rho};
     }
-    const std::span<Constraint> cons(cons_store.data(), n_cons);
+    const std::span<const Constraint> cons(cons_store.data(), n_cons);
     const double own_look_s = std::min(look_s, own_horizon_s);
-    const WorstCase wc =
-        grown_clear ? WorstCase{} : worst_case(cons, slabs, own_look_s, ctx.dt_s, 0.0);
-    if (!nominal.threat && !wc.threat) return;
+    const GrownSets now = grown_clear ? GrownSets{} : grown_sets(cons, slabs, own_look_s);
+    if (!nominal.threat && !now.threat) return;
     out.activity.candidates.push_back(static_cast<int>(i));
-    if (wc.threat) {
+    if (now.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
       // moving the fragment by a dt t along its axis; from the next step on, a push of at most
-      // a_max moves it D(t - dt) per unit.
+      // a_max moves it D(t - dt) per unit. Only that axis's times inside the boxes change.
+      std::array<Constraint, 2> wait_store = cons_store;
+      const std::span<const Constraint> wait_cons(wait_store.data(), n_cons);
+      GrownSets wait = now;
       if (a_nominal > 0.0) {
         const std::size_t k = best < 2 ? 1 : 0;
         const double sign = best % 2 == 0 ? 1.0 : -1.0;
         const double dv = sign * std::min(a_nominal, params_.a_max_mps2) * ctx.dt_s;
-        for (Constraint& con : cons) con.axis[k].c1 += dv;
+        for (std::size_t j = 0; j < n_cons; ++j) wait_store[j].axis[k].c1 += dv;
+        wait.in[k] = axis_set(wait_cons, static_cast<int>(k), slabs, own_look_s);
+        join_axes(wait);
       }
-      const WorstCase wait = worst_case(cons, slabs, own_look_s, ctx.dt_s, ctx.dt_s);
-      const double a_wait = wait.threat ? least_allowed(wait.need, way_weights_, weighted_) : 0.0;
-      if (!(a_wait <= params_.a_max_mps2)) {
-        const std::size_t wc_best = chosen(wc.need, way_weights_, weighted_);
+      // Waiting is safe when some allowed way's push from the next step on stays within a_max;
+      // the nominal way is tried first, and each way's sampling stops once it is out of reach.
+      bool wait_safe = !wait.threat;
+      for (std::size_t n_tried = 0; n_tried < 4 && !wait_safe; ++n_tried) {
+        const std::size_t w = (best + n_tried) % 4;
+        if (weighted_ && !(way_weights_[w] > 0.0)) continue;
+        wait_safe = way_need(wait_cons, wait, slabs, w, ctx.dt_s, ctx.dt_s, params_.a_max_mps2) <=
+                    params_.a_max_mps2;
+      }
+      if (!wait_safe) {
+        const std::array<double, 4> wc_need = way_needs(cons, now, slabs, ctx.dt_s, 0.0);
+        const std::size_t wc_best = chosen(wc_need, way_weights_, weighted_);
         const double a_wc =
-            std::isfinite(wc.need[wc_best]) ? wc.need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
+            std::isfinite(wc_need[wc_best]) ? wc_need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
         // When no push within a_max beats the worst case, nothing is promised for this fragment
         // any more: the capped push then goes the constant model's way out, which saves it from
         // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
