@@ -216,6 +216,11 @@ Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double 
     return within(c, Coord{lo - r_lo.c0, -r_lo.c1, -r_lo.c2}, Coord{hi + r_hi.c0, r_hi.c1, r_hi.c2},
                   t0, t1);
   };
+  // Both knees at or before the start, or both at or past the end (an instant or unbounded turn,
+  // a short window): one piece, the common case.
+  if ((knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end)) {
+    return piece(0.0, t_end);
+  }
   const std::array<double, 4> cut{0.0, std::clamp(std::min(knee_lo_s, knee_hi_s), 0.0, t_end),
                                   std::clamp(std::max(knee_lo_s, knee_hi_s), 0.0, t_end), t_end};
   Intervals out;
