@@ -768,6 +768,17 @@ template <int N>
   return w;
 }
 
+// The second tier for the group of four from fragment i, those in `open`. Out of line: the first
+// tier's loop, which settled debris runs through with nothing open, stays small.
+[[gnu::target("avx2"), gnu::noinline]] void second_tier_group(const SecondTierOf<WideOps>& wq,
+                                                              const Gathered<WideOps>& g,
+                                                              const Far<WideOps>& far,
+                                                              std::size_t i, int open,
+                                                              Answers& out) {
+  const std::size_t index[WideOps::kWidth] = {i, i + 1, i + 2, i + 3};
+  second_tier<WideOps>(wq, g, far, index, open, out);
+}
+
 // Whole groups of four here (the mask's bits by AVX's own instruction, which only code compiled
 // for AVX may use), each group's doubts through the second tier at once, from the states and
 // first-tier answers already in registers (in flight, when nearly every fragment is in doubt,
@@ -792,8 +803,7 @@ template <int N>
         ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
     if (open == 0) continue;  // the usual case once the debris has settled
     wide_doubts += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
-    const std::size_t index[O::kWidth] = {i, i + 1, i + 2, i + 3};
-    second_tier<O>(wq, g, far, index, open, out);
+    second_tier_group(wq, g, far, i, open, out);
   }
   double rest = 0.0;
   std::size_t tail_doubts = 0;
