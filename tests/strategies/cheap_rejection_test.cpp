@@ -589,6 +589,42 @@ TEST(TwoBoxRejection, EachSideOfTheGrownBoxGrowsByItsOwn) {
   EXPECT_EQ(c.grown_clears()[1], 1);
 }
 
+// Growth 2 t^2 on every side over a 1 s window: 2 m at its end, 0.125, 0.5, 1.125 and 2 m at the
+// ends of its four pieces. A fragment at y = 0.6 m (0.35 m above the top face) is inside the y
+// slab only once the growth passes 0.35 m, after 0.418 s. Crossing x at 10 m/s from x = -1 m it
+// is past x = 3 m by then, beyond the x face (at most 2.3 m): never inside the growing box. The
+// whole window's box (2 m on every side) holds its path; piece by piece it is clear of each:
+// 0.6 > 0.375 in the first, x from 1.5 to 4 m against 0.8 in the second, and so on. At 2 m/s it
+// is at x = 0 at 0.5 s, inside the box grown by 0.5 m: never cleared.
+TEST(TwoBoxRejection, PiecesOfTheWindowClearAPathThatPassesEarly) {
+  TwoBoxClearance::Boxes b = still_boxes();
+  b.grown = true;
+  b.window_s = 1.0;
+  b.cap_s = 1.0;
+  const auto growth = [](double t) { return Eigen::Vector3d::Constant(2.0 * t * t); };
+  b.grow_lo_m = growth(b.window_s);
+  b.grow_hi_m = growth(b.window_s);
+  const std::vector<FragmentState> f{state_at({-1.0, 0.6, 0.0}, {10.0, 0.0, 0.0}, 0.0),
+                                     state_at({-1.0, 0.6, 0.0}, {2.0, 0.0, 0.0}, 0.0)};
+  TwoBoxClearance whole;
+  whole.run(f, b);
+  EXPECT_EQ(whole.grown_clears()[0], 0);
+  EXPECT_EQ(whole.grown_clears()[1], 0);
+  b.pieces = 4;
+  for (int j = 0; j < b.pieces; ++j) {
+    b.piece_grow_lo_m[static_cast<std::size_t>(j)] = growth(b.window_s * (j + 1) / b.pieces);
+    b.piece_grow_hi_m[static_cast<std::size_t>(j)] = growth(b.window_s * (j + 1) / b.pieces);
+  }
+  for (const bool wide : {true, false}) {
+    TwoBoxClearance pieces;
+    pieces.use_wide_lanes(wide);
+    pieces.run(f, b);
+    EXPECT_EQ(pieces.grown_clears()[0], 1) << wide;
+    EXPECT_EQ(pieces.grown_clears()[1], 0) << wide;
+    EXPECT_EQ(pieces.clears()[0], 1) << wide;  // the protected box is not grown at all
+  }
+}
+
 TEST(TwoBoxRejection, APathIsExaminedUntilItReachesTheGround) {
   // The box 0.5 m below a ground at y = 0 (its top face 0.25 m below it), gravity down. Resting
   // on the ground right above it: edge-min examines one step (it falls 1.4 mm): clear. 1 cm up:
@@ -699,12 +735,85 @@ TEST(TwoBoxRejection, NeverClearsAPathThatEntersEitherBoxWithinItsOwnLookAhead) 
   EXPECT_GT(grown_cleared, 0);
 }
 
+// The grown box of random cases grown by base + q t^2 on each side (edge-min's bounded_accel
+// growth: the turn's cap, then half the acceleration), the window in four pieces each grown by
+// its end's growth: no path the pieces clear is inside the box grown by its growth at that time,
+// at any of 1,000 times over its window (a sampled check: it can miss a brief entry, never report
+// a false one), every path the whole window clears is still cleared, and more are.
+TEST(TwoBoxRejection, PiecesNeverClearAPathThatEntersTheGrowingBox) {
+  std::mt19937_64 rng(24);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  long whole_cleared = 0;
+  long pieces_cleared = 0;
+  for (int round = 0; round < 20; ++round) {
+    TwoBoxCase k = random_two_box_case(rng, 500, round % 2 == 0);
+    TwoBoxClearance::Boxes& b = k.boxes;
+    Eigen::Vector3d base_lo;
+    Eigen::Vector3d base_hi;
+    Eigen::Vector3d q_lo;
+    Eigen::Vector3d q_hi;
+    for (int c = 0; c < 3; ++c) {
+      base_lo[c] = 0.2 * u(rng);
+      base_hi[c] = 0.2 * u(rng);
+      q_lo[c] = 2.0 * u(rng);
+      q_hi[c] = 2.0 * u(rng);
+    }
+    const auto grow_lo = [&](double t) -> Eigen::Vector3d { return base_lo + q_lo * t * t; };
+    const auto grow_hi = [&](double t) -> Eigen::Vector3d { return base_hi + q_hi * t * t; };
+    b.grow_lo_m = grow_lo(b.window_s);
+    b.grow_hi_m = grow_hi(b.window_s);
+    TwoBoxClearance whole;
+    whole.run(k.fragments, b);
+    b.pieces = TwoBoxClearance::Boxes::kMaxPieces;
+    for (int j = 0; j < b.pieces; ++j) {
+      const double end_s = b.window_s * (j + 1) / b.pieces;
+      b.piece_grow_lo_m[static_cast<std::size_t>(j)] = grow_lo(end_s);
+      b.piece_grow_hi_m[static_cast<std::size_t>(j)] = grow_hi(end_s);
+    }
+    TwoBoxClearance pieces;
+    pieces.run(k.fragments, b);
+    for (std::size_t i = 0; i < k.fragments.size(); ++i) {
+      whole_cleared += whole.grown_clears()[i];
+      pieces_cleared += pieces.grown_clears()[i];
+      if (whole.grown_clears()[i]) {
+        ASSERT_EQ(pieces.grown_clears()[i], 1) << round << " " << i;
+      }
+      ASSERT_EQ(pieces.clears()[i], whole.clears()[i]) << round << " " << i;
+      if (!pieces.grown_clears()[i]) continue;
+      const FragmentState& f = k.fragments[i];
+      const double own = own_interval(f.position_m.y(), f.velocity_mps.y(), b.half_gy_mps2,
+                                      b.ground_m + f.radius_m, b.cap_s, b.floor_s);
+      const double t_end = std::min(b.window_s, own);
+      const Eigen::Vector3d r = Eigen::Vector3d::Constant(f.radius_m);
+      for (int s = 0; s <= 1000; ++s) {
+        const double t = t_end * s / 1000.0;
+        const Eigen::Vector3d x = k.local_grown[i].at(t);
+        const Eigen::Vector3d lo = b.lo_m - grow_lo(t) - r;
+        const Eigen::Vector3d hi = b.hi_m + grow_hi(t) + r;
+        const bool inside = (x.array() >= lo.array()).all() && (x.array() <= hi.array()).all();
+        ASSERT_FALSE(inside) << round << " " << i << " t " << t;
+      }
+    }
+  }
+  EXPECT_GT(whole_cleared, 0);
+  EXPECT_GT(pieces_cleared, whole_cleared);
+}
+
 TEST(TwoBoxRejection, WideAndNarrowLanesAnswerTheSame) {
   std::mt19937_64 rng(23);
   for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3},
                               std::size_t{5}, std::size_t{4097}}) {
     for (const bool still_grown : {false, true}) {
-      const TwoBoxCase k = random_two_box_case(rng, n, still_grown);
+      TwoBoxCase k = random_two_box_case(rng, n, still_grown);
+      // Half the cases with the window in pieces, each grown by a share of the whole's growth.
+      if (n % 2 == 1) {
+        k.boxes.pieces = TwoBoxClearance::Boxes::kMaxPieces;
+        for (int j = 0; j < k.boxes.pieces; ++j) {
+          const double share = (j + 1.0) / k.boxes.pieces;
+          k.boxes.piece_grow_lo_m[static_cast<std::size_t>(j)] = share * k.boxes.grow_lo_m;
+          k.boxes.piece_grow_hi_m[static_cast<std::size_t>(j)] = share * k.boxes.grow_hi_m;
+        }
+      }
       TwoBoxClearance wide;
       TwoBoxClearance narrow;
       narrow.use_wide_lanes(false);

@@ -628,6 +628,14 @@ struct SecondTierOf {
   V hi[3];
   V glo[3];
   V ghi[3];
+  // The grown box's window in pieces (TwoBoxClearance::Boxes::pieces): each piece's start and
+  // end, and its box.
+  int pieces;
+  V piece_t0[TwoBoxClearance::Boxes::kMaxPieces];
+  V piece_t1[TwoBoxClearance::Boxes::kMaxPieces];
+  BoxAccelOf<O> piece_acc[TwoBoxClearance::Boxes::kMaxPieces];
+  V piece_lo[TwoBoxClearance::Boxes::kMaxPieces][3];
+  V piece_hi[TwoBoxClearance::Boxes::kMaxPieces][3];
 };
 using SecondTier = SecondTierOf<NarrowOps>;
 
@@ -643,6 +651,39 @@ struct Answers {
 template <class V>
 [[gnu::always_inline]] inline V dot3(const V (&x)[3], const V (&y)[3]) {
   return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+// The grown box piece by piece, for paths whose whole window left it in doubt (d, w: their
+// coordinates and velocities in the grown box's frame; tg: each one's window): set where every
+// piece's box is missed over the piece's part of [0, tg]. Each piece's test starts at its own
+// start time, so the path is moved there first (rounding far inside the box test's margin).
+template <class O>
+[[gnu::always_inline]] inline typename O::M grown_by_pieces(const SecondTierOf<O>& q,
+                                                            const typename O::V (&d)[3],
+                                                            const typename O::V (&w)[3],
+                                                            typename O::V radius,
+                                                            typename O::V tg) {
+  using V = typename O::V;
+  const V zero{};
+  typename O::M clear = O::eq(zero, zero);
+  for (int j = 0; j < q.pieces; ++j) {
+    const V t0 = q.piece_t0[j];
+    const V t1 = O::min(tg, q.piece_t1[j]);
+    const typename O::M past = O::le(t1, t0);  // the path's window ends before this piece
+    const BoxAccelOf<O>& acc = q.piece_acc[j];
+    V dj[3];
+    V wj[3];
+    for (int c = 0; c < 3; ++c) {
+      dj[c] = at(d[c], w[c], acc.a[c], t0);
+      wj[c] = w[c] + 2.0 * acc.a[c] * t0;
+    }
+    const V span = O::max(t1 - t0, zero);
+    const V reach = q.a_l1 * (span * span) + acc.reach_m;
+    clear = clear &
+            (past | box_clear<O>(dj, wj, acc, q.piece_lo[j], q.piece_hi[j], radius, span, reach));
+    if (O::bits(clear) == 0) break;
+  }
+  return clear;
 }
 
 // The second tier for a lane's worth of fragments (index[k] in lane k), given their states and
@@ -678,6 +719,9 @@ template <class O>
     const V tg = O::min(q.window, t);
     const V reach = q.a_l1 * (tg * tg) + q.grown_acc.reach_m;
     grown_bits |= O::bits(box_clear<O>(d, wg, q.grown_acc, q.glo, q.ghi, g.radius, tg, reach));
+    if (grown_bits != all && q.pieces > 0) {
+      grown_bits |= O::bits(grown_by_pieces<O>(q, d, wg, g.radius, tg));
+    }
   }
   const int settled = box_bits & grown_bits;
   for (int k = 0; k < O::kWidth; ++k) {
@@ -765,6 +809,14 @@ template <int N>
   widen(q.hi, w.hi);
   widen(q.glo, w.glo);
   widen(q.ghi, w.ghi);
+  w.pieces = q.pieces;
+  for (int j = 0; j < q.pieces; ++j) {
+    w.piece_t0[j] = widen(q.piece_t0[j]);
+    w.piece_t1[j] = widen(q.piece_t1[j]);
+    w.piece_acc[j] = widen(q.piece_acc[j]);
+    widen(q.piece_lo[j], w.piece_lo[j]);
+    widen(q.piece_hi[j], w.piece_hi[j]);
+  }
   return w;
 }
 
@@ -1090,6 +1142,17 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   broadcast3(boxes.hi_m, q.hi);
   broadcast3(grown_lo, q.glo);
   broadcast3(grown_hi, q.ghi);
+  q.pieces = boxes.grown ? std::clamp(boxes.pieces, 0, Boxes::kMaxPieces) : 0;
+  for (int j = 0; j < q.pieces; ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    const Eigen::Vector3d piece_lo = boxes.lo_m - boxes.piece_grow_lo_m[u];
+    const Eigen::Vector3d piece_hi = boxes.hi_m + boxes.piece_grow_hi_m[u];
+    q.piece_t0[j] = lanes::broadcast(boxes.window_s * j / q.pieces);
+    q.piece_t1[j] = lanes::broadcast(boxes.window_s * (j + 1) / q.pieces);
+    q.piece_acc[j] = box_accel(boxes.a_mps2, piece_lo, piece_hi, 0.0);
+    broadcast3(piece_lo, q.piece_lo[j]);
+    broadcast3(piece_hi, q.piece_hi[j]);
+  }
   Answers out{clears_.data(), grown_clears_.data(), unsettled_.data(), 0};
 
   // The first tier over every fragment, the second over those it leaves in doubt: the second tier

@@ -11,6 +11,7 @@
 // so the processor overlaps paths instead of waiting on each one's latency chain.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <memory_resource>
 #include <span>
@@ -154,6 +155,15 @@ class TwoBoxClearance {
     Eigen::Vector3d grow_lo_m = Eigen::Vector3d::Zero();
     Eigen::Vector3d grow_hi_m = Eigen::Vector3d::Zero();
     double window_s = 0.0;
+    // The window in `pieces` equal pieces (0: none), for the paths the whole window leaves in
+    // doubt: piece j covers [window_s j / pieces, window_s (j + 1) / pieces] and grows each side
+    // by piece_grow_*_m[j], at least the growth at the piece's end (the growth only increases
+    // with time). A path clear of each piece's box over that piece's times is clear of the
+    // grown box: the growth at the window's end is the most, and passing early it is far less.
+    static constexpr int kMaxPieces = 4;
+    int pieces = 0;
+    std::array<Eigen::Vector3d, kMaxPieces> piece_grow_lo_m{};
+    std::array<Eigen::Vector3d, kMaxPieces> piece_grow_hi_m{};
   };
   void run(std::span<const FragmentState> fragments, const Boxes& boxes);
   // Room for runs over up to n fragments: such a run allocates nothing.

@@ -543,6 +543,19 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       boxes.grow_lo_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, -1));
       boxes.grow_hi_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, +1));
     }
+    // And piece by piece (its growth at its end, times as TwoBoxClearance computes them): the
+    // growth at the window's end is several times that of a path passing early in it, and the
+    // paths the whole window leaves in doubt are mostly such.
+    boxes.pieces = TwoBoxClearance::Boxes::kMaxPieces;
+    for (int j = 0; j < boxes.pieces; ++j) {
+      const double end_s = boxes.window_s * (j + 1) / boxes.pieces;
+      for (int k = 0; k < 3; ++k) {
+        boxes.piece_grow_lo_m[static_cast<std::size_t>(j)][k] =
+            reject_rho.at(end_s, reject_rho.cap_m(k, -1));
+        boxes.piece_grow_hi_m[static_cast<std::size_t>(j)][k] =
+            reject_rho.at(end_s, reject_rho.cap_m(k, +1));
+      }
+    }
   };
   if (boxes.grown) {
     if (!(r_hint_m >= 0.0)) {
