@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <utility>
 
 #include "geometry/work_space.hpp"
@@ -843,7 +844,8 @@ template <int N>
                                                     std::int32_t* doubt, double* r_max,
                                                     std::size_t* doubts) {
   using O = WideOps;
-  const SecondTierOf<O> wq = widen(q);
+  // Widened at the first group in doubt: settled debris (most steps) never needs it.
+  std::optional<SecondTierOf<O>> wq;
   O::V r = O::splat(0.0);
   std::size_t wide_doubts = 0;
   std::size_t i = 0;
@@ -855,7 +857,8 @@ template <int N>
         ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
     if (open == 0) continue;  // the usual case once the debris has settled
     wide_doubts += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
-    second_tier_group(wq, g, far, i, open, out);
+    if (!wq) wq.emplace(widen(q));
+    second_tier_group(*wq, g, far, i, open, out);
   }
   double rest = 0.0;
   std::size_t tail_doubts = 0;
