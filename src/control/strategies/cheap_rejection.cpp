@@ -735,9 +735,53 @@ template <class O>
   }
 }
 
+// The second tier's constants for a run's boxes.
+SecondTier second_tier_constants(const TwoBoxClearance::Boxes& boxes) {
+  const BoxFrame& frame = boxes.frame;
+  const Eigen::Vector3d grown_lo = boxes.lo_m - boxes.grow_lo_m;
+  const Eigen::Vector3d grown_hi = boxes.hi_m + boxes.grow_hi_m;
+  SecondTier q;
+  broadcast3(frame.origin_m, q.origin);
+  broadcast3(frame.velocity_mps, q.frame_v);
+  broadcast3(boxes.grown_velocity_mps, q.grown_v);
+  for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], q.axes[c]);
+  q.acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
+  q.grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
+  q.a_l1 = lanes::broadcast(boxes.a_mps2.lpNorm<1>());
+  q.window = lanes::broadcast(boxes.window_s);
+  broadcast3(boxes.lo_m, q.lo);
+  broadcast3(boxes.hi_m, q.hi);
+  broadcast3(grown_lo, q.glo);
+  broadcast3(grown_hi, q.ghi);
+  q.pieces = boxes.grown ? std::clamp(boxes.pieces, 0, TwoBoxClearance::Boxes::kMaxPieces) : 0;
+  for (int j = 0; j < q.pieces; ++j) {
+    const auto u = static_cast<std::size_t>(j);
+    const Eigen::Vector3d piece_lo = boxes.lo_m - boxes.piece_grow_lo_m[u];
+    const Eigen::Vector3d piece_hi = boxes.hi_m + boxes.piece_grow_hi_m[u];
+    q.piece_t0[j] = lanes::broadcast(boxes.window_s * j / q.pieces);
+    q.piece_t1[j] = lanes::broadcast(boxes.window_s * (j + 1) / q.pieces);
+    q.piece_acc[j] = box_accel(boxes.a_mps2, piece_lo, piece_hi, 0.0);
+    broadcast3(piece_lo, q.piece_lo[j]);
+    broadcast3(piece_hi, q.piece_hi[j]);
+  }
+  return q;
+}
+
+// Those constants, built when first asked for.
+struct LazySecondTier {
+  const TwoBoxClearance::Boxes* boxes;
+  std::optional<SecondTier> q;
+  const SecondTier& get() {
+    if (!q) q.emplace(second_tier_constants(*boxes));
+    return *q;
+  }
+};
+
 // The second tier over the fragments the first left in doubt (ascending), two at a time.
-void second_tier_over(const FragmentState* f, const FirstTier& p, const SecondTier& q,
+void second_tier_over(const FragmentState* f, const FirstTier& p, LazySecondTier& lazy,
                       const std::int32_t* doubt, std::size_t doubts, Answers& out) {
+  if (doubts == 0) return;
+  const SecondTier& q = lazy.get();
   for (std::size_t j = 0; j < doubts; j += lanes::kWidth) {
     const std::size_t j1 = std::min(j + 1, doubts - 1);
     const std::size_t index[2] = {static_cast<std::size_t>(doubt[j]),
@@ -821,44 +865,49 @@ template <int N>
   return w;
 }
 
-// The second tier for the group of four from fragment i, those in `open`. Out of line: the first
-// tier's loop, which settled debris runs through with nothing open, stays small.
-[[gnu::target("avx2"), gnu::noinline]] void second_tier_group(const SecondTierOf<WideOps>& wq,
-                                                              const Gathered<WideOps>& g,
-                                                              const Far<WideOps>& far,
-                                                              std::size_t i, int open,
-                                                              Answers& out) {
-  const std::size_t index[WideOps::kWidth] = {i, i + 1, i + 2, i + 3};
-  second_tier<WideOps>(wq, g, far, index, open, out);
+// Four fragments' states from f, and which of the four the first tier left in doubt (a bit each).
+[[gnu::target("avx2"), gnu::always_inline]] inline Gathered<WideOps> load_four(
+    const FragmentState* f, bool packed) {
+  return packed ? gather_packed(f) : gather<WideOps>(f, [](int k) { return k; });
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline int open_lanes(const Far<WideOps>& far) {
+  return ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
 }
 
 // Whole groups of four here (the mask's bits by AVX's own instruction, which only code compiled
-// for AVX may use), each group's doubts through the second tier at once, from the states and
-// first-tier answers already in registers (in flight, when nearly every fragment is in doubt,
-// that is one pass instead of two). The rest two at a time through the first tier, their doubts
+// for AVX may use), then the groups with a fragment in doubt through the second tier four lanes
+// at once. Two loops: the first, which settled debris runs through with nothing in doubt, stays
+// small, its constants in registers; the second gathers and tests its groups again (the same
+// numbers) rather than keep them. The rest two at a time through the first tier, their doubts
 // listed in `doubt` for second_tier_over; the count of those is returned, every doubt's in
-// *doubts.
+// *doubts. `groups` has room for n / 4 entries.
 [[gnu::target("avx2")]] std::size_t both_tiers_wide(const FragmentState* f, std::size_t n,
                                                     const FirstTier& p, bool packed,
-                                                    const SecondTier& q, Answers& out,
-                                                    std::int32_t* doubt, double* r_max,
-                                                    std::size_t* doubts) {
+                                                    LazySecondTier& q, Answers& out,
+                                                    std::int32_t* groups, std::int32_t* doubt,
+                                                    double* r_max, std::size_t* doubts) {
   using O = WideOps;
-  // Widened at the first group in doubt: settled debris (most steps) never needs it.
-  std::optional<SecondTierOf<O>> wq;
   O::V r = O::splat(0.0);
   std::size_t wide_doubts = 0;
+  std::size_t open_groups = 0;
   std::size_t i = 0;
   for (; i + O::kWidth <= n; i += O::kWidth) {
-    const Gathered<O> g = packed ? gather_packed(f + i) : gather<O>(f + i, [](int k) { return k; });
+    const Gathered<O> g = load_four(f + i, packed);
     r = O::max(r, g.radius);
-    const Far<O> far = first_tier_test<O>(p, g);
-    const int open =
-        ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
-    if (open == 0) continue;  // the usual case once the debris has settled
+    const int open = open_lanes(first_tier_test<O>(p, g));
+    groups[open_groups] = static_cast<std::int32_t>(i);
+    open_groups += static_cast<std::size_t>(open != 0);
     wide_doubts += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
-    if (!wq) wq.emplace(widen(q));
-    second_tier_group(*wq, g, far, i, open, out);
+  }
+  if (open_groups > 0) {
+    const SecondTierOf<O> wq = widen(q.get());
+    for (std::size_t k = 0; k < open_groups; ++k) {
+      const auto start = static_cast<std::size_t>(groups[k]);
+      const Gathered<O> g = load_four(f + start, packed);
+      const Far<O> far = first_tier_test<O>(p, g);
+      const std::size_t index[O::kWidth] = {start, start + 1, start + 2, start + 3};
+      second_tier<O>(wq, g, far, index, open_lanes(far), out);
+    }
   }
   double rest = 0.0;
   std::size_t tail_doubts = 0;
@@ -1099,6 +1148,7 @@ void TwoBoxClearance::reserve(std::size_t n) {
   reserve_touched(clears_, n);
   reserve_touched(grown_clears_, n);
   reserve_touched(doubt_, n + 4);
+  reserve_touched(groups_, n / 4 + 1);
   reserve_touched(unsettled_, n);
 }
 
@@ -1108,6 +1158,7 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   clears_.assign(n, 1);
   grown_clears_.assign(n, 1);
   doubt_.resize(n + 4);
+  groups_.resize(n / 4 + 1);
   unsettled_.resize(n);
   unsettled_count_ = 0;
   doubts_ = 0;
@@ -1131,31 +1182,9 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   p.ground = boxes.ground_m;
   p.window = boxes.window_s;
 
-  // The second tier's constants, for the fragments the first leaves in doubt.
-  SecondTier q;
-  broadcast3(frame.origin_m, q.origin);
-  broadcast3(frame.velocity_mps, q.frame_v);
-  broadcast3(boxes.grown_velocity_mps, q.grown_v);
-  for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], q.axes[c]);
-  q.acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
-  q.grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
-  q.a_l1 = lanes::broadcast(boxes.a_mps2.lpNorm<1>());
-  q.window = lanes::broadcast(boxes.window_s);
-  broadcast3(boxes.lo_m, q.lo);
-  broadcast3(boxes.hi_m, q.hi);
-  broadcast3(grown_lo, q.glo);
-  broadcast3(grown_hi, q.ghi);
-  q.pieces = boxes.grown ? std::clamp(boxes.pieces, 0, Boxes::kMaxPieces) : 0;
-  for (int j = 0; j < q.pieces; ++j) {
-    const auto u = static_cast<std::size_t>(j);
-    const Eigen::Vector3d piece_lo = boxes.lo_m - boxes.piece_grow_lo_m[u];
-    const Eigen::Vector3d piece_hi = boxes.hi_m + boxes.piece_grow_hi_m[u];
-    q.piece_t0[j] = lanes::broadcast(boxes.window_s * j / q.pieces);
-    q.piece_t1[j] = lanes::broadcast(boxes.window_s * (j + 1) / q.pieces);
-    q.piece_acc[j] = box_accel(boxes.a_mps2, piece_lo, piece_hi, 0.0);
-    broadcast3(piece_lo, q.piece_lo[j]);
-    broadcast3(piece_hi, q.piece_hi[j]);
-  }
+  // The second tier's constants, built at its first fragment: most steps, once the debris has
+  // settled, the first tier leaves none.
+  LazySecondTier q{&boxes, {}};
   Answers out{clears_.data(), grown_clears_.data(), unsettled_.data(), 0};
 
   // The first tier over every fragment, the second over those it leaves in doubt: the second tier
@@ -1167,8 +1196,8 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   if (wide_) {
     const FragmentState& f0 = fragments[0];
     const bool packed = f0.velocity_mps.data() == f0.position_m.data() + 3;
-    listed =
-        both_tiers_wide(fragments.data(), n, p, packed, q, out, doubt, &max_radius_m_, &doubts_);
+    listed = both_tiers_wide(fragments.data(), n, p, packed, q, out, groups_.data(), doubt,
+                             &max_radius_m_, &doubts_);
   } else {
     listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
     doubts_ = listed;

@@ -184,8 +184,9 @@ class TwoBoxClearance {
   std::pmr::memory_resource* mem_;
   std::pmr::vector<char> clears_{mem_};
   std::pmr::vector<char> grown_clears_{mem_};
-  [[maybe_unused]] bool wide_ = false;          // unused where there are no wide lanes
-  std::pmr::vector<std::int32_t> doubt_{mem_};  // fragments the first tier left in doubt
+  [[maybe_unused]] bool wide_ = false;           // unused where there are no wide lanes
+  std::pmr::vector<std::int32_t> doubt_{mem_};   // fragments the first tier left in doubt
+  std::pmr::vector<std::int32_t> groups_{mem_};  // groups of four with one in doubt (wide lanes)
   std::pmr::vector<std::int32_t> unsettled_{mem_};
   std::size_t unsettled_count_ = 0;
   std::size_t doubts_ = 0;
