@@ -623,6 +623,22 @@ TEST(TwoBoxRejection, PiecesOfTheWindowClearAPathThatPassesEarly) {
     EXPECT_EQ(pieces.grown_clears()[1], 0) << wide;
     EXPECT_EQ(pieces.clears()[0], 1) << wide;  // the protected box is not grown at all
   }
+  // A window of 0 s is its one instant: a fragment at rest 0.1 m beyond the top face is inside a
+  // box grown by 0.2 m then, whatever the pieces.
+  b.window_s = 0.0;
+  b.grow_lo_m = b.grow_hi_m = Eigen::Vector3d::Constant(0.2);
+  for (int j = 0; j < b.pieces; ++j) {
+    b.piece_grow_lo_m[static_cast<std::size_t>(j)] = Eigen::Vector3d::Constant(0.2);
+    b.piece_grow_hi_m[static_cast<std::size_t>(j)] = Eigen::Vector3d::Constant(0.2);
+  }
+  const std::vector<FragmentState> at_rest{
+      state_at({0.0, 0.35, 0.0}, Eigen::Vector3d::Zero(), 0.0)};
+  for (const bool wide : {true, false}) {
+    TwoBoxClearance pieces;
+    pieces.use_wide_lanes(wide);
+    pieces.run(at_rest, b);
+    EXPECT_EQ(pieces.grown_clears()[0], 0) << wide;
+  }
 }
 
 TEST(TwoBoxRejection, APathIsExaminedUntilItReachesTheGround) {

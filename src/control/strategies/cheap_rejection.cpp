@@ -670,7 +670,9 @@ template <class O>
   for (int j = 0; j < q.pieces; ++j) {
     const V t0 = q.piece_t0[j];
     const V t1 = O::min(tg, q.piece_t1[j]);
-    const typename O::M past = O::le(t1, t0);  // the path's window ends before this piece
+    // The path's window ends before this piece (strictly: a window ending at a piece's start
+    // still has that instant to test, and a window of 0 s its one instant in the first piece).
+    const typename O::M past = O::lt(t1, t0);
     const BoxAccelOf<O>& acc = q.piece_acc[j];
     V dj[3];
     V wj[3];
