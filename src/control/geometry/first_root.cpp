@@ -81,8 +81,10 @@ Sample sample_reversed(const Quartic& c, double x) {
   return {q, dp, size};
 }
 
+// Inlined: it is called two to three times per quadratic's roots, and a call costs as much as
+// its few operations (-ffp-contract=off keeps the rounding the same either way).
 template <int D>
-Sample sample(const Quartic& c, double x) {
+[[gnu::always_inline]] inline Sample sample(const Quartic& c, double x) {
   const double ax = std::abs(x);
   double p = at(c, D);
   double dp = 0.0;

@@ -33,7 +33,9 @@ std::vector<double> real_roots(const Quartic& c, double lo, double hi);
 
 // real_roots without allocating, for hot loops: the same roots in a fixed array.
 struct RootList {
-  std::array<double, 8> x{};  // room for every root the search can report
+  // Room for every root the search can report; only the first n are set (a hot loop's list is
+  // not cleared first).
+  std::array<double, 8> x;
   std::size_t n = 0;
   const double* begin() const { return x.data(); }
   const double* end() const { return x.data() + n; }

@@ -178,13 +178,15 @@ struct WideOps {
   [[gnu::always_inline]] static M ge(const V& a, const V& b) {
     return {reinterpret_cast<WideMask>(a >= b)};
   }
+  // A mask lane is all ones or all zeros (comparisons and their &, |, ~), so the vector
+  // conditional is the bitwise select; written so, GCC emits one blend instead of three logic ops.
   [[gnu::always_inline]] static V select(const M& m, const V& a, const V& b) {
-    return reinterpret_cast<V>((reinterpret_cast<WideMask>(a) & m.bits) |
-                               (reinterpret_cast<WideMask>(b) & ~m.bits));
+    return m.bits ? a : b;
   }
-  // std::min and std::max, as lanes::min and lanes::max.
-  [[gnu::always_inline]] static V min(const V& a, const V& b) { return select(lt(b, a), b, a); }
-  [[gnu::always_inline]] static V max(const V& a, const V& b) { return select(lt(a, b), b, a); }
+  // std::min and std::max, as lanes::min and lanes::max: b < a ? b : a is what vminpd(b, a)
+  // computes, NaN and signed zeros included, and GCC emits it for this form.
+  [[gnu::always_inline]] static V min(const V& a, const V& b) { return b < a ? b : a; }
+  [[gnu::always_inline]] static V max(const V& a, const V& b) { return a < b ? b : a; }
   [[gnu::always_inline]] static V abs(const V& x) {
     const WideMask magnitude = WideMask{} + INT64_MAX;
     return reinterpret_cast<V>(reinterpret_cast<WideMask>(x) & magnitude);

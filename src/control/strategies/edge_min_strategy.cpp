@@ -26,9 +26,10 @@ using Coord = AxisQuadratic;
 // A set of at most a few disjoint time intervals, in order. Room for every set the constant model
 // makes (a parabola meets a slab in at most two pieces; intersections of two and three such sets
 // in at most seven); past that, the last piece is widened to hold the rest: more times at which a
-// push must clear the box, never fewer.
+// push must clear the box, never fewer. Only the first n pieces are set: a set is made and copied
+// several times per exact solve, and clearing the rest cost as much as filling it.
 struct Intervals {
-  std::array<std::array<double, 2>, 8> span{};
+  std::array<std::array<double, 2>, 8> span;
   int n = 0;
   bool empty() const { return n == 0; }
   void append(double a, double b) {
@@ -43,7 +44,7 @@ struct Intervals {
 // The times in [t0, t1] where lo(t) <= coord(t) <= hi(t), the bounds quadratics too.
 Intervals within(const Coord& c, const Coord& lo, const Coord& hi, double t0, double t1) {
   // t0, at most two roots per bound, t1; kept sorted by insertion.
-  std::array<double, 6> pts{};
+  std::array<double, 6> pts;
   int np = 0;
   auto add = [&pts, &np](double v) {
     int k = np++;
@@ -54,12 +55,14 @@ Intervals within(const Coord& c, const Coord& lo, const Coord& hi, double t0, do
   };
   add(t0);
   add(t1);
-  for (const Coord& bound : {lo, hi}) {
+  const auto add_roots = [&](const Coord& bound) {
     for (double r :
          list_real_roots({c.c0 - bound.c0, c.c1 - bound.c1, c.c2 - bound.c2, 0.0, 0.0}, t0, t1)) {
       if (np < static_cast<int>(pts.size())) add(r);
     }
-  }
+  };
+  add_roots(lo);
+  add_roots(hi);
   Intervals out;
   for (int i = 0; i + 1 < np; ++i) {
     const double a = pts[static_cast<std::size_t>(i)];
@@ -682,17 +685,24 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
       // moving the fragment by a dt t along its axis; from the next step on, a push of at most
       // a_max moves it D(t - dt) per unit. Only that axis's times inside the boxes change.
-      std::array<Constraint, 2> wait_store = cons_store;
-      const std::span<const Constraint> wait_cons(wait_store.data(), n_cons);
-      GrownSets wait = now;
+      // Without a push the next step's worst case is this one's: no copies then.
+      std::span<const Constraint> wait_cons = cons;
+      const GrownSets* wait_sets = &now;
+      std::array<Constraint, 2> pushed_cons;
+      GrownSets pushed_sets;
       if (a_nominal > 0.0) {
         const std::size_t k = best < 2 ? 1 : 0;
         const double sign = best % 2 == 0 ? 1.0 : -1.0;
         const double dv = sign * std::min(a_nominal, params_.a_max_mps2) * ctx.dt_s;
-        for (std::size_t j = 0; j < n_cons; ++j) wait_store[j].axis[k].c1 += dv;
-        wait.in[k] = axis_set(wait_cons, static_cast<int>(k), slabs, own_look_s);
-        join_axes(wait);
+        pushed_cons = cons_store;
+        for (std::size_t j = 0; j < n_cons; ++j) pushed_cons[j].axis[k].c1 += dv;
+        wait_cons = std::span<const Constraint>(pushed_cons.data(), n_cons);
+        pushed_sets = now;
+        pushed_sets.in[k] = axis_set(wait_cons, static_cast<int>(k), slabs, own_look_s);
+        join_axes(pushed_sets);
+        wait_sets = &pushed_sets;
       }
+      const GrownSets& wait = *wait_sets;
       // Waiting is safe when some allowed way's push from the next step on stays within a_max;
       // the nominal way is tried first, and each way's sampling stops once it is out of reach.
       bool wait_safe = !wait.threat;
