@@ -15,6 +15,7 @@
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define FRAGSIM_WIDE_LANES 1
 #include <immintrin.h>
+#pragma GCC diagnostic ignored "-Wpsabi"  // the four-lane type only ever lives in AVX2 code
 #endif
 
 namespace fragsim {
@@ -38,7 +39,9 @@ constexpr int kBallSplits = 3;
   return lanes::abs(x[0]) + lanes::abs(x[1]) + lanes::abs(x[2]);
 }
 
-[[gnu::always_inline]] inline Lanes dot(const Lanes (&x)[3], const Lanes (&y)[3]) {
+// In lanes of either width (Lanes, and the four-lane rejection's).
+template <class V>
+[[gnu::always_inline]] inline V dot(const V (&x)[3], const V (&y)[3]) {
   return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
 }
 
@@ -148,7 +151,6 @@ struct NarrowOps {
 };
 
 #if defined(FRAGSIM_WIDE_LANES)
-#pragma GCC diagnostic ignored "-Wpsabi"  // the four-lane type only ever lives in AVX2 code
 using Wide = double __attribute__((vector_size(32)));
 using WideMask = std::int64_t __attribute__((vector_size(32)));
 struct WideOps {
@@ -651,11 +653,6 @@ struct Answers {
   std::size_t unsettled_count;
 };
 
-template <class V>
-[[gnu::always_inline]] inline V dot3(const V (&x)[3], const V (&y)[3]) {
-  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
-}
-
 // The grown box piece by piece, for paths whose whole window left it in doubt (d, w: their
 // coordinates and velocities in the grown box's frame; tg: each one's window): set where every
 // piece's box is missed over the piece's part of [0, tg]. Each piece's test starts at its own
@@ -709,9 +706,9 @@ template <class O>
     const V rel[3] = {g.p[0] - q.origin[0], g.p[1] - q.origin[1], g.p[2] - q.origin[2]};
     const V rv[3] = {g.v[0] - q.frame_v[0], g.v[1] - q.frame_v[1], g.v[2] - q.frame_v[2]};
     const V rvg[3] = {g.v[0] - q.grown_v[0], g.v[1] - q.grown_v[1], g.v[2] - q.grown_v[2]};
-    d[c] = dot3(rel, q.axes[c]);
-    w[c] = dot3(rv, q.axes[c]);
-    wg[c] = dot3(rvg, q.axes[c]);
+    d[c] = dot(rel, q.axes[c]);
+    w[c] = dot(rv, q.axes[c]);
+    wg[c] = dot(rvg, q.axes[c]);
   }
   const V t = far.t;
   int box_bits = O::bits(far.box);
