@@ -4,7 +4,7 @@
 // same fragment states with a plain conservative test, in the same process: a loaded machine
 // slows both, so their ratio is what to read.
 //
-//   worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...]
+//   worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...] [--shadow section.key=value ...]
 //
 // Phases by step (the default scene at dt 1/60 s): t = 0 is step 0, early flight steps 1-29, the
 // lens pass steps 30-59 (the debris passing the camera), landed the last 60 steps. Per phase:
@@ -14,7 +14,15 @@
 // allocations made inside the strategy's steps and the page faults of its first step (both in
 // the first run of the process, as a game's first explosion meets them). Each other figure is
 // the median over REPEATS runs (default 5). FRAGSIM_WORST_FRAME_CSV=FILE writes the last
-// repeat's per-step times (step,strategy_ns,floor_ns,physics_ns per fragment).
+// repeat's per-step times (step,strategy_ns,floor_ns,physics_ns per fragment, ...).
+//
+// --shadow: a second copy of the strategy, made with these settings on top of the run's, is
+// stepped on the same states every step, its answers thrown away, and timed the same way; the
+// figures then add its cost and the strategy's cost beyond it, step by step. `--shadow
+// edge-min.max_solves=1` leaves edge-min its rejection, the ranking of what it left and one exact
+// solve a step, so the cost beyond the shadow is at most what the other exact solves cost. The
+// two take turns going first (the strategy on even steps), so that neither always finds the
+// states already in the cache.
 //
 // The strategy steps into its own reserved output, copied to the run's outside the timing, so the
 // run's own buffers growing is not counted as the strategy's.
@@ -35,6 +43,7 @@
 #include <vector>
 
 #include "geometry/work_space.hpp"
+#include "io/atomic_file.hpp"
 #include "sim/run.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
@@ -94,6 +103,7 @@ long minor_faults() {
 // What one step cost, in ns for the whole step.
 struct StepTimes {
   double strategy_ns = 0.0;
+  double shadow_ns = 0.0;  // --shadow's copy (0 without one)
   double floor_ns = 0.0;
   long faults = 0;
   long allocations = 0;
@@ -119,10 +129,12 @@ int floor_pass(const fragsim::StepContext& ctx, double reach_m, double horizon_s
   return doubtful;
 }
 
-// Times the strategy it wraps, step by step, and runs the floor pass after it.
+// Times the strategy it wraps, step by step, and runs the floor pass after it; times the shadow,
+// if any, on the same states.
 class TimedStrategy final : public fragsim::Strategy {
  public:
-  explicit TimedStrategy(std::unique_ptr<fragsim::Strategy> inner) : inner_(std::move(inner)) {}
+  TimedStrategy(std::unique_ptr<fragsim::Strategy> inner, std::unique_ptr<fragsim::Strategy> shadow)
+      : inner_(std::move(inner)), shadow_(std::move(shadow)) {}
   std::string name() const override { return inner_->name(); }
   fragsim::WorldNeeds needs() const override { return inner_->needs(); }
   fragsim::Predictor path_predictor() const override { return inner_->path_predictor(); }
@@ -131,16 +143,24 @@ class TimedStrategy final : public fragsim::Strategy {
     // Room for one answer per fragment, its pages touched, as a game keeps its output buffer: the
     // strategy's faults are then its own.
     const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
-    fragsim::reserve_touched(own_.forces, n);
-    fragsim::reserve_touched(own_.activity.candidates, n);
-    fragsim::reserve_touched(own_.activity.capped, n);
+    for (fragsim::StepOutput* o : {&own_, &shadow_out_}) {
+      fragsim::reserve_touched(o->forces, n);
+      fragsim::reserve_touched(o->activity.candidates, n);
+      fragsim::reserve_touched(o->activity.capped, n);
+    }
+    if (shadow_) shadow_->reset(fragment_count);
     times.clear();
     times.reserve(4096);
   }
-  void reserve(int fragment_count) override { inner_->reserve(fragment_count); }
+  void reserve(int fragment_count) override {
+    inner_->reserve(fragment_count);
+    if (shadow_) shadow_->reserve(fragment_count);
+  }
   void step(const fragsim::StepContext& ctx, fragsim::StepOutput& out) override {
     own_.clear();
     StepTimes t;
+    const bool shadow_first = times.size() % 2 == 1;
+    if (shadow_first) t.shadow_ns = shadow_step(ctx);
     const long faults_before = minor_faults();
     allocations.store(0);
     counting.store(true);
@@ -153,6 +173,7 @@ class TimedStrategy final : public fragsim::Strategy {
     t.strategy_ns = stop - start;
     t.survivors = static_cast<int>(ctx.fragments.size()) - own_.activity.rejected_cheaply;
     t.candidates = static_cast<int>(own_.activity.candidates.size());
+    if (!shadow_first) t.shadow_ns = shadow_step(ctx);
     // The floor: a reach of a few metres and a 3 s horizon, the default scene's scale; the count
     // is kept so the pass is not optimised away.
     const double floor_start = thread_cpu_ns();
@@ -173,8 +194,18 @@ class TimedStrategy final : public fragsim::Strategy {
   long sink() const { return sink_; }
 
  private:
+  double shadow_step(const fragsim::StepContext& ctx) {
+    if (!shadow_) return 0.0;
+    shadow_out_.clear();
+    const double start = thread_cpu_ns();
+    shadow_->step(ctx, shadow_out_);
+    return thread_cpu_ns() - start;
+  }
+
   std::unique_ptr<fragsim::Strategy> inner_;
+  std::unique_ptr<fragsim::Strategy> shadow_;
   fragsim::StepOutput own_;
+  fragsim::StepOutput shadow_out_;
   long sink_ = 0;
 };
 
@@ -217,10 +248,18 @@ const std::vector<std::string> kNames = {"t0_ns",
                                          "first_run_allocations_in_steps",
                                          "first_run_faults_step0",
                                          "first_run_faults_in_steps"};
+// With --shadow: its cost, and the strategy's beyond it step by step (the strategy's time less the
+// shadow's in the same step), over the flight and the lens pass.
+const std::vector<std::string> kShadowNames = {
+    "shadow_flight_mean_ns",      "shadow_flight_p95_ns",         "shadow_lens_mean_ns",
+    "shadow_lens_p95_ns",         "beyond_shadow_flight_mean_ns", "beyond_shadow_flight_p95_ns",
+    "beyond_shadow_lens_mean_ns", "beyond_shadow_lens_p95_ns"};
 
 int run(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...]\n");
+    std::fprintf(stderr,
+                 "usage: worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...] "
+                 "[--shadow section.key=value ...]\n");
     return 2;
   }
   const std::string scene_path = argv[1];
@@ -232,15 +271,30 @@ int run(int argc, char** argv) {
     first_override = 4;
   }
   if (repeats < 1) throw std::invalid_argument("REPEATS must be at least 1");
+  // The run's settings, then (after --shadow) the shadow's on top of them.
   std::vector<fragsim::SceneOverride> overrides;
+  std::vector<fragsim::SceneOverride> shadow_overrides;
+  bool in_shadow = false;
   for (int i = first_override; i < argc; ++i) {
     const std::string kv = argv[i];
+    if (kv == "--shadow") {
+      in_shadow = true;
+      continue;
+    }
     const auto eq = kv.find('=');
     if (eq == std::string::npos) throw std::invalid_argument("expected key=value, got " + kv);
-    overrides.push_back({kv.substr(0, eq), kv.substr(eq + 1)});
+    (in_shadow ? shadow_overrides : overrides).push_back({kv.substr(0, eq), kv.substr(eq + 1)});
   }
+  if (in_shadow && shadow_overrides.empty()) {
+    throw std::invalid_argument("--shadow needs at least one key=value");
+  }
+  const bool shadowed = !shadow_overrides.empty();
   const fragsim::Scene scene = fragsim::load_scene(scene_path, overrides);
   fragsim::validate_strategy_settings(strategy, scene);
+  std::vector<fragsim::SceneOverride> both = overrides;
+  both.insert(both.end(), shadow_overrides.begin(), shadow_overrides.end());
+  const fragsim::Scene shadow_scene = shadowed ? fragsim::load_scene(scene_path, both) : scene;
+  if (shadowed) fragsim::validate_strategy_settings(strategy, shadow_scene);
 
   std::vector<Figures> all;
   int fragments = 0;
@@ -248,7 +302,8 @@ int run(int argc, char** argv) {
   std::vector<StepTimes> last;
   std::vector<double> last_physics;
   for (int r = 0; r < repeats; ++r) {
-    TimedStrategy timed(fragsim::make_strategy(strategy, scene));
+    TimedStrategy timed(fragsim::make_strategy(strategy, scene),
+                        shadowed ? fragsim::make_strategy(strategy, shadow_scene) : nullptr);
     fragsim::Run run(scene, timed);
     fragments = static_cast<int>(run.state().fragments.size());
     std::vector<double> physics_ns;
@@ -257,17 +312,20 @@ int run(int argc, char** argv) {
       const double start = thread_cpu_ns();
       run.step();
       const double total = thread_cpu_ns() - start;
-      // The step less the strategy and the floor inside it: the physics and the run's copies.
+      // The step less the strategy, its shadow and the floor inside it: the physics and the run's
+      // copies.
       const StepTimes& t = timed.times[before];
-      physics_ns.push_back(total - t.strategy_ns - t.floor_ns);
+      physics_ns.push_back(total - t.strategy_ns - t.shadow_ns - t.floor_ns);
     }
     run.finish();
     steps = static_cast<int>(timed.times.size());
     const double n = std::max(fragments, 1);
-    std::vector<double> per, floor_per;
+    std::vector<double> per, floor_per, shadow_per, beyond_per;
     for (const StepTimes& t : timed.times) {
       per.push_back(t.strategy_ns / n);
       floor_per.push_back(t.floor_ns / n);
+      shadow_per.push_back(t.shadow_ns / n);
+      beyond_per.push_back((t.strategy_ns - t.shadow_ns) / n);
     }
     const auto slice = [](const std::vector<double>& v, int a, int b) {
       a = std::clamp(a, 0, static_cast<int>(v.size()));
@@ -312,8 +370,16 @@ int run(int argc, char** argv) {
     // Allocations and page faults as a game's first explosion meets them: the first run in the
     // process (later runs reuse the heap the first one grew, so their medians read 0).
     if (!all.empty()) {
-      for (std::size_t k = f.values.size() - 3; k < f.values.size(); ++k) {
+      for (std::size_t k = kNames.size() - 3; k < kNames.size(); ++k) {
         f.values[k] = all.front().values[k];
+      }
+    }
+    if (shadowed) {
+      for (const std::vector<double>* v : {&shadow_per, &beyond_per}) {
+        const std::vector<double> v_flight = slice(*v, 1, 60);
+        const std::vector<double> v_lens = slice(*v, 30, 60);
+        f.values.insert(f.values.end(), {mean(v_flight), quantile(v_flight, 0.95), mean(v_lens),
+                                         quantile(v_lens, 0.95)});
       }
     }
     all.push_back(f);
@@ -323,23 +389,31 @@ int run(int argc, char** argv) {
   }
   std::printf("# worst_frame %s %s: %d fragments, %d steps, median of %d runs; ns per fragment\n",
               scene_path.c_str(), strategy.c_str(), fragments, steps, repeats);
-  for (std::size_t k = 0; k < kNames.size(); ++k) {
+  std::vector<std::string> names = kNames;
+  if (shadowed) names.insert(names.end(), kShadowNames.begin(), kShadowNames.end());
+  for (std::size_t k = 0; k < names.size(); ++k) {
     std::vector<double> v;
     for (const Figures& f : all) v.push_back(f.values[k]);
-    std::printf("%-32s %12.4g\n", kNames[k].c_str(), quantile(v, 0.5));
+    std::printf("%-32s %12.4g\n", names[k].c_str(), quantile(v, 0.5));
   }
   if (const char* file = std::getenv("FRAGSIM_WORST_FRAME_CSV")) {
-    std::FILE* out = std::fopen(file, "w");
-    if (out == nullptr) throw std::invalid_argument(std::string("cannot write ") + file);
-    std::fprintf(out,
-                 "step,strategy_ns,floor_ns,physics_ns,allocations,faults,survivors,candidates\n");
+    std::string text =
+        "step,strategy_ns,floor_ns,physics_ns,allocations,faults,survivors,candidates";
+    text += shadowed ? ",shadow_ns\n" : "\n";
     const double n = std::max(fragments, 1);
+    char line[256];
     for (std::size_t k = 0; k < last.size(); ++k) {
-      std::fprintf(out, "%zu,%.3f,%.3f,%.3f,%ld,%ld,%d,%d\n", k, last[k].strategy_ns / n,
-                   last[k].floor_ns / n, last_physics[k] / n, last[k].allocations, last[k].faults,
-                   last[k].survivors, last[k].candidates);
+      std::snprintf(line, sizeof line, "%zu,%.3f,%.3f,%.3f,%ld,%ld,%d,%d", k,
+                    last[k].strategy_ns / n, last[k].floor_ns / n, last_physics[k] / n,
+                    last[k].allocations, last[k].faults, last[k].survivors, last[k].candidates);
+      text += line;
+      if (shadowed) {
+        std::snprintf(line, sizeof line, ",%.3f", last[k].shadow_ns / n);
+        text += line;
+      }
+      text += '\n';
     }
-    std::fclose(out);
+    fragsim::write_file_atomically(file, text);
   }
   return 0;
 }

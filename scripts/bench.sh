@@ -11,7 +11,9 @@
 #   scale_curve.csv, scale_curve.png
 #                                   time per step and peak memory, 1k to 100k fragments
 #   worst_frame.txt                 edge and edge-min by phase of the explosion, timed in-run
-#                                   (bench/worst_frame.cpp), at 1,728 and 15,625 fragments
+#                                   (bench/worst_frame.cpp), at 1,728 and 15,625 fragments;
+#                                   edge-min beside a shadow with one exact solve a step, so
+#                                   its exact solves' cost shows apart from its rejection's
 # Run it on an otherwise idle machine: medians are robust to a little noise, not to a busy core.
 # Usage: scripts/bench.sh [OUT]     (about 15 minutes on 2 cores)
 set -euo pipefail
@@ -53,8 +55,10 @@ done | tee "$out/play.txt"
 
 echo "== the worst frame: the controller's cost by phase, inside a real run"
 for s in edge-min edge; do
+  shadow=()
+  if [ "$s" = edge-min ]; then shadow=(--shadow edge-min.max_solves=1); fi
   for splits in 12 25; do
-    "$bin/bench/worst_frame" data/scenes/front.ini "$s" 5 "object.splits=$splits"
+    "$bin/bench/worst_frame" data/scenes/front.ini "$s" 5 "object.splits=$splits" "${shadow[@]}"
   done
 done | tee "$out/worst_frame.txt"
 
