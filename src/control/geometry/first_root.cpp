@@ -20,10 +20,8 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// Horner's rounding error on a polynomial of degree d is at most gamma_2d |terms| ~ d eps |terms|
-// (Higham, "Accuracy and Stability of Numerical Algorithms", section 5.1): 4 eps for a quartic.
-// A value that small is indistinguishable from zero.
-constexpr double kZeroTolerance = 4.0 * kEps;
+// first_root.hpp's kRootZeroTolerance.
+constexpr double kZeroTolerance = kRootZeroTolerance;
 
 // A cap on the bracketed search: each step either halves the bracket or is a Newton step under
 // half the one before; bisection alone reaches adjacent doubles in ~64 halvings (see `split`),

@@ -12,6 +12,7 @@
 // it against a long-double companion-matrix reference.
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <memory_resource>
 #include <optional>
@@ -22,6 +23,11 @@ namespace fragsim {
 
 // c[0] + c[1] x + ... + c[4] x^4; higher unused coefficients are zero.
 using Quartic = std::array<double, 5>;
+
+// Horner's rounding error on a polynomial of degree d is at most gamma_2d |terms| ~ d eps |terms|
+// (Higham, "Accuracy and Stability of Numerical Algorithms", section 5.1): 4 eps for a quartic.
+// A value within kRootZeroTolerance times the size of its terms is indistinguishable from zero.
+inline constexpr double kRootZeroTolerance = 4.0 * std::numeric_limits<double>::epsilon();
 
 // Horner's rule, as is.
 double evaluate(const Quartic& c, double x);

@@ -14,6 +14,8 @@
 #include "geometry/parabola.hpp"
 #include "geometry/time_to_plane.hpp"
 #include "strategies/force_cap.hpp"
+#include "strategies/intervals.hpp"
+#include "strategies/slab_times.hpp"
 
 namespace fragsim {
 namespace {
@@ -22,98 +24,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // c0 + c1 t + c2 t^2: one camera-space coordinate of the relative path.
 using Coord = AxisQuadratic;
-
-// A set of at most a few disjoint time intervals, in order. Room for every set the constant model
-// makes (a parabola meets a slab in at most two pieces; intersections of two and three such sets
-// in at most seven); past that, the last piece is widened to hold the rest: more times at which a
-// push must clear the box, never fewer. Only the first n pieces are set: a set is made and copied
-// several times per exact solve, and clearing the rest cost as much as filling it.
-struct Intervals {
-  std::array<std::array<double, 2>, 8> span;
-  int n = 0;
-  bool empty() const { return n == 0; }
-  void append(double a, double b) {
-    if (n < static_cast<int>(span.size())) {
-      span[static_cast<std::size_t>(n++)] = {a, b};
-    } else {
-      span[span.size() - 1][1] = std::max(span[span.size() - 1][1], b);
-    }
-  }
-};
-
-// The times in [t0, t1] where lo(t) <= coord(t) <= hi(t), the bounds quadratics too.
-Intervals within(const Coord& c, const Coord& lo, const Coord& hi, double t0, double t1) {
-  // t0, at most two roots per bound, t1; kept sorted by insertion.
-  std::array<double, 6> pts;
-  int np = 0;
-  auto add = [&pts, &np](double v) {
-    int k = np++;
-    for (; k > 0 && pts[static_cast<std::size_t>(k - 1)] > v; --k) {
-      pts[static_cast<std::size_t>(k)] = pts[static_cast<std::size_t>(k - 1)];
-    }
-    pts[static_cast<std::size_t>(k)] = v;
-  };
-  add(t0);
-  add(t1);
-  const auto add_roots = [&](const Coord& bound) {
-    for (double r :
-         list_real_roots({c.c0 - bound.c0, c.c1 - bound.c1, c.c2 - bound.c2, 0.0, 0.0}, t0, t1)) {
-      if (np < static_cast<int>(pts.size())) add(r);
-    }
-  };
-  add_roots(lo);
-  add_roots(hi);
-  Intervals out;
-  for (int i = 0; i + 1 < np; ++i) {
-    const double a = pts[static_cast<std::size_t>(i)];
-    const double b = pts[static_cast<std::size_t>(i + 1)];
-    const double m = 0.5 * (a + b);
-    const double mid = c.at(m);
-    const bool inside = b > a ? (mid >= lo.at(m) && mid <= hi.at(m)) : false;
-    if (!inside) continue;
-    if (out.n > 0 && out.span[static_cast<std::size_t>(out.n - 1)][1] >= a) {
-      out.span[static_cast<std::size_t>(out.n - 1)][1] = b;  // contiguous with the previous piece
-    } else {
-      out.append(a, b);
-    }
-  }
-  // A path that starts inside has t0 in the set even when the first piece is degenerate.
-  const double v0 = c.at(t0);
-  if (out.n == 0 && v0 >= lo.at(t0) && v0 <= hi.at(t0)) out.append(t0, t0);
-  return out;
-}
-
-// The constant model's slab: fixed bounds over [0, horizon].
-Intervals within(const Coord& c, double lo, double hi, double horizon) {
-  return within(c, Coord{lo, 0.0, 0.0}, Coord{hi, 0.0, 0.0}, 0.0, horizon);
-}
-
-Intervals intersect(const Intervals& a, const Intervals& b) {
-  Intervals out;
-  for (int i = 0; i < a.n; ++i) {
-    for (int j = 0; j < b.n; ++j) {
-      const double lo = std::max(a.span[i][0], b.span[j][0]);
-      const double hi = std::min(a.span[i][1], b.span[j][1]);
-      if (lo <= hi) out.append(lo, hi);
-    }
-  }
-  return out;
-}
-
-// a's pieces, then b's (all of b later than a's), joined where they meet.
-Intervals unite_in_order(const Intervals& a, const Intervals& b) {
-  Intervals out = a;
-  for (int j = 0; j < b.n; ++j) {
-    const auto& piece = b.span[static_cast<std::size_t>(j)];
-    if (out.n > 0 && out.span[static_cast<std::size_t>(out.n - 1)][1] >= piece[0]) {
-      auto& last = out.span[static_cast<std::size_t>(out.n - 1)];
-      last[1] = std::max(last[1], piece[1]);
-    } else {
-      out.append(piece[0], piece[1]);
-    }
-  }
-  return out;
-}
 
 // The least acceleration along +axis (sign = +1) or -axis (sign = -1) that keeps coordinate
 // `c` beyond `half` (outside [-half, half] on that side) at every time in `when`: the largest,
@@ -203,27 +113,36 @@ struct Constraint {
 
 // The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab. Each
 // side has its own knee: between the knees both bounds are single quadratics.
-Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double t_end) {
-  const Coord& c = con.axis[static_cast<std::size_t>(k)];
+// Constraint con's grown slab on axis k over [t0, t1], a piece wholly on one side of each of its
+// sides' knees (the knees are its ends).
+Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, double t1) {
+  const double m = 0.5 * (t0 + t1);
+  const Coord r_lo = con.rho.piece(con.rho.cap_m(k, -1), m >= con.rho.knee_s(con.rho.cap_m(k, -1)));
+  const Coord r_hi = con.rho.piece(con.rho.cap_m(k, +1), m >= con.rho.knee_s(con.rho.cap_m(k, +1)));
   const double lo = slabs.lo[static_cast<std::size_t>(k)];
   const double hi = slabs.hi[static_cast<std::size_t>(k)];
-  const double cap_lo_m = con.rho.cap_m(k, -1);
-  const double cap_hi_m = con.rho.cap_m(k, +1);
-  const double knee_lo_s = con.rho.knee_s(cap_lo_m);
-  const double knee_hi_s = con.rho.knee_s(cap_hi_m);
+  return {con.axis[static_cast<std::size_t>(k)], Coord{lo - r_lo.c0, -r_lo.c1, -r_lo.c2},
+          Coord{hi + r_hi.c0, r_hi.c1, r_hi.c2}};
+}
+
+// Both knees of axis k's sides at or before the start, or both at or past the end (an instant or
+// unbounded turn, a short window): the grown slab over [0, t_end] is one piece, the common case.
+bool one_piece(const Constraint& con, int k, double t_end) {
+  const double knee_lo_s = con.rho.knee_s(con.rho.cap_m(k, -1));
+  const double knee_hi_s = con.rho.knee_s(con.rho.cap_m(k, +1));
+  return (knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end);
+}
+
+// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab: piece
+// by piece, between the knees, where both bounds are single quadratics.
+Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double t_end) {
   const auto piece = [&](double t0, double t1) {
-    // Which side of each knee: the piece lies wholly on one side (the knees are its ends).
-    const double m = 0.5 * (t0 + t1);
-    const Coord r_lo = con.rho.piece(cap_lo_m, m >= knee_lo_s);
-    const Coord r_hi = con.rho.piece(cap_hi_m, m >= knee_hi_s);
-    return within(c, Coord{lo - r_lo.c0, -r_lo.c1, -r_lo.c2}, Coord{hi + r_hi.c0, r_hi.c1, r_hi.c2},
-                  t0, t1);
+    const Slab s = grown_slab(con, k, slabs, t0, t1);
+    return slab_times(s.c, s.lo, s.hi, t0, t1);
   };
-  // Both knees at or before the start, or both at or past the end (an instant or unbounded turn,
-  // a short window): one piece, the common case.
-  if ((knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end)) {
-    return piece(0.0, t_end);
-  }
+  if (one_piece(con, k, t_end)) return piece(0.0, t_end);
+  const double knee_lo_s = con.rho.knee_s(con.rho.cap_m(k, -1));
+  const double knee_hi_s = con.rho.knee_s(con.rho.cap_m(k, +1));
   const std::array<double, 4> cut{0.0, std::clamp(std::min(knee_lo_s, knee_hi_s), 0.0, t_end),
                                   std::clamp(std::max(knee_lo_s, knee_hi_s), 0.0, t_end), t_end};
   Intervals out;
@@ -248,6 +167,13 @@ struct GrownSets {
 
 // The times in [0, t_end] at which axis k is inside every constraint's grown slab.
 Intervals axis_set(std::span<const Constraint> cons, int k, const Slabs& slabs, double t_end) {
+  // Two one-piece slabs (the robust models' two regions, any turn rate): found together.
+  if (cons.size() == 2 && one_piece(cons[0], k, t_end) && one_piece(cons[1], k, t_end)) {
+    Intervals both[2];
+    slab_times(grown_slab(cons[0], k, slabs, 0.0, t_end), grown_slab(cons[1], k, slabs, 0.0, t_end),
+               0.0, t_end, both);
+    return both[0].empty() ? both[0] : intersect(both[0], both[1]);
+  }
   Intervals set = within_grown(cons[0], k, slabs, t_end);
   for (std::size_t j = 1; j < cons.size() && !set.empty(); ++j) {
     set = intersect(set, within_grown(cons[j], k, slabs, t_end));
@@ -361,11 +287,11 @@ struct Nominal {
 Nominal nominal_push(const Coord& x, const Coord& y, const Coord& z, const Slabs& slabs,
                      double horizon_s, double dt) {
   Nominal out;
-  const Intervals in_z = within(z, slabs.lo[2], slabs.hi[2], horizon_s);
+  const Intervals in_z = slab_times(z, slabs.lo[2], slabs.hi[2], horizon_s);
   if (in_z.empty()) return out;
-  const Intervals in_x = within(x, slabs.lo[0], slabs.hi[0], horizon_s);
+  const Intervals in_x = slab_times(x, slabs.lo[0], slabs.hi[0], horizon_s);
   if (in_x.empty()) return out;
-  const Intervals in_y = within(y, slabs.lo[1], slabs.hi[1], horizon_s);
+  const Intervals in_y = slab_times(y, slabs.lo[1], slabs.hi[1], horizon_s);
   if (in_y.empty()) return out;
   const Intervals in_xz = intersect(in_x, in_z);
   const Intervals in_yz = intersect(in_y, in_z);
