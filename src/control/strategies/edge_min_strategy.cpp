@@ -88,6 +88,17 @@ struct Inflation {
     return {0.0, q1_mps + rot_m * turn_radps, q2_mps2};
   }
   double at(double t, double cap_m) const { return piece(cap_m, t >= knee_s(cap_m)).at(t); }
+  // Each side's knee, as turn_cap_m (set by with_knees()): the exact solve asks for them on every
+  // axis of every candidate, and each is a division.
+  std::array<double, 6> side_knee_s{};
+  double knee_s(int k, int sign) const { return side_knee_s[turn_side(k, sign)]; }
+  Inflation with_knees() const {
+    Inflation out = *this;
+    for (std::size_t i = 0; i < out.side_knee_s.size(); ++i) {
+      out.side_knee_s[i] = knee_s(turn_cap_m[i]);
+    }
+    return out;
+  }
 };
 
 // The turn caps of a box lo <= x <= hi about the eye (lo <= 0 <= hi) whose farthest corner is
@@ -108,7 +119,7 @@ std::array<double, 6> turn_caps_m(const Eigen::Vector3d& lo_m, const Eigen::Vect
 // the region's centre, and how far the protected box can stray from there.
 struct Constraint {
   std::array<Coord, 3> axis;
-  Inflation rho;
+  const Inflation* rho;  // with its knees (Inflation::with_knees)
 };
 
 // The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab. Each
@@ -116,9 +127,10 @@ struct Constraint {
 // Constraint con's grown slab on axis k over [t0, t1], a piece wholly on one side of each of its
 // sides' knees (the knees are its ends).
 Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, double t1) {
+  const Inflation& rho = *con.rho;
   const double m = 0.5 * (t0 + t1);
-  const Coord r_lo = con.rho.piece(con.rho.cap_m(k, -1), m >= con.rho.knee_s(con.rho.cap_m(k, -1)));
-  const Coord r_hi = con.rho.piece(con.rho.cap_m(k, +1), m >= con.rho.knee_s(con.rho.cap_m(k, +1)));
+  const Coord r_lo = rho.piece(rho.cap_m(k, -1), m >= rho.knee_s(k, -1));
+  const Coord r_hi = rho.piece(rho.cap_m(k, +1), m >= rho.knee_s(k, +1));
   const double lo = slabs.lo[static_cast<std::size_t>(k)];
   const double hi = slabs.hi[static_cast<std::size_t>(k)];
   return {con.axis[static_cast<std::size_t>(k)], Coord{lo - r_lo.c0, -r_lo.c1, -r_lo.c2},
@@ -128,8 +140,8 @@ Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, dou
 // Both knees of axis k's sides at or before the start, or both at or past the end (an instant or
 // unbounded turn, a short window): the grown slab over [0, t_end] is one piece, the common case.
 bool one_piece(const Constraint& con, int k, double t_end) {
-  const double knee_lo_s = con.rho.knee_s(con.rho.cap_m(k, -1));
-  const double knee_hi_s = con.rho.knee_s(con.rho.cap_m(k, +1));
+  const double knee_lo_s = con.rho->knee_s(k, -1);
+  const double knee_hi_s = con.rho->knee_s(k, +1);
   return (knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end);
 }
 
@@ -141,8 +153,8 @@ Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double 
     return slab_times(s.c, s.lo, s.hi, t0, t1);
   };
   if (one_piece(con, k, t_end)) return piece(0.0, t_end);
-  const double knee_lo_s = con.rho.knee_s(con.rho.cap_m(k, -1));
-  const double knee_hi_s = con.rho.knee_s(con.rho.cap_m(k, +1));
+  const double knee_lo_s = con.rho->knee_s(k, -1);
+  const double knee_hi_s = con.rho->knee_s(k, +1);
   const std::array<double, 4> cut{0.0, std::clamp(std::min(knee_lo_s, knee_hi_s), 0.0, t_end),
                                   std::clamp(std::max(knee_lo_s, knee_hi_s), 0.0, t_end), t_end};
   Intervals out;
@@ -212,8 +224,8 @@ double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m,
   std::array<double, 2> knee_s{};
   const std::size_t n_cons = std::min(cons.size(), cap_m.size());
   for (std::size_t j = 0; j < n_cons; ++j) {
-    cap_m[j] = cons[j].rho.cap_m(k, sign);
-    knee_s[j] = cons[j].rho.knee_s(cap_m[j]);
+    cap_m[j] = cons[j].rho->cap_m(k, sign);
+    knee_s[j] = cons[j].rho->knee_s(k, sign);
   }
   double need = 0.0;
   for (int i = 0; i < when.n; ++i) {
@@ -224,7 +236,7 @@ double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m,
       double gap = kInf;
       for (std::size_t j = 0; j < n_cons; ++j) {
         const Constraint& con = cons[j];
-        gap = std::min(gap, edge_m + con.rho.piece(cap_m[j], t >= knee_s[j]).at(t) -
+        gap = std::min(gap, edge_m + con.rho->piece(cap_m[j], t >= knee_s[j]).at(t) -
                                 sign * con.axis[static_cast<std::size_t>(k)].at(t));
       }
       if (!(gap > 0.0)) continue;
@@ -427,10 +439,12 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   const bool use_accel =
       (params_.camera_model == CameraModel::kBoundedAccel && std::isfinite(accel_mps2)) ||
       !ball_known;
-  const Inflation accel_rho{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0, rot_m,
-                            turn_radps, turn_cap_m};
-  const Inflation ball_rho{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps,
-                           turn_cap_m};
+  const Inflation accel_rho = Inflation{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0,
+                                        rot_m, turn_radps, turn_cap_m}
+                                  .with_knees();
+  const Inflation ball_rho =
+      Inflation{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps, turn_cap_m}
+          .with_knees();
   // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
   // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
   const Inflation& reject_rho = use_accel ? accel_rho : ball_rho;
@@ -594,13 +608,13 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     // The worst case over the look-ahead window.
     std::array<Constraint, 2> cons_store;
     std::size_t n_cons = 0;
-    if (use_accel) cons_store[n_cons++] = {{x, y, z}, accel_rho};
+    if (use_accel) cons_store[n_cons++] = {{x, y, z}, &accel_rho};
     if (ball_known) {
       // About the eye now: the fragment's own velocity, not the relative one.
       const Eigen::Vector3d v = cam.dir_to_camera(f.velocity_mps);
       cons_store[n_cons++] = {{Coord{d.x(), v.x(), half_g.x()}, Coord{d.y(), v.y(), half_g.y()},
                                Coord{d.z(), v.z(), half_g.z()}},
-                              ball_rho};
+                              &ball_rho};
     }
     const std::span<const Constraint> cons(cons_store.data(), n_cons);
     const double own_look_s = std::min(look_s, own_horizon_s);

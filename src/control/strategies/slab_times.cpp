@@ -47,9 +47,9 @@ template <class O>
 struct LaneRootsOf {
   typename O::V first;
   typename O::V second;
-  int one;   // bits: at least one root
-  int two;   // two roots
-  int slow;  // ask list_real_roots
+  typename O::M one;   // at least one root
+  typename O::M two;   // two roots
+  typename O::M slow;  // ask list_real_roots
 };
 template <class O, class V = typename O::V, class M = typename O::M>
 [[gnu::always_inline]] inline LaneRootsOf<O> lane_roots(const V (&q)[3], V lo, V hi) {
@@ -98,21 +98,21 @@ template <class O, class V = typename O::V, class M = typename O::M>
   LaneRootsOf<O> out;
   out.first = O::select(linear, line_root, O::select(cross1, root1, root2));
   out.second = root2;
-  out.one = O::bits((linear & line_in) | (quadratic & (cross1 | cross2)));
+  out.one = (linear & line_in) | (quadratic & (cross1 | cross2));
   // A later root is listed only when it exceeds the one before (list_real_roots' add()).
-  out.two = O::bits(quadratic & cross1 & cross2 & O::gt(root2, root1));
-  out.slow = O::bits(quadratic & (O::none_of(sampled) | touches | unplaced));
+  out.two = quadratic & cross1 & cross2 & O::gt(root2, root1);
+  out.slow = quadratic & (O::none_of(sampled) | touches | unplaced);
   return out;
 }
 
 // Lane k's roots from lane_roots, or list_real_roots for a slow lane.
-template <class O>
-RootList lane_root_list(const LaneRootsOf<O>& r, int k, const typename O::V (&q)[3], double lo,
-                        double hi) {
-  if (((r.slow >> k) & 1) != 0)
+RootList lane_root_list(const LaneRootsOf<NarrowOps>& r, int k, const NarrowOps::V (&q)[3],
+                        double lo, double hi) {
+  if (((NarrowOps::bits(r.slow) >> k) & 1) != 0)
     return list_real_roots({q[0][k], q[1][k], q[2][k], 0.0, 0.0}, lo, hi);
   RootList list;
-  list.n = static_cast<std::size_t>(((r.one >> k) & 1) + ((r.two >> k) & 1));
+  list.n = static_cast<std::size_t>(((NarrowOps::bits(r.one) >> k) & 1) +
+                                    ((NarrowOps::bits(r.two) >> k) & 1));
   list.x[0] = r.first[k];
   list.x[1] = r.second[k];
   return list;
@@ -160,6 +160,11 @@ Intervals pieces_inside(const AxisQuadratic& c, const AxisQuadratic& lo, const A
 }
 
 #if defined(FRAGSIM_WIDE_LANES)
+// A mask's bits by AVX's own instruction (WideOps::bits is the portable, slower form).
+[[gnu::target("avx2"), gnu::always_inline]] inline int bits(const WideOps::M& m) {
+  return _mm256_movemask_pd(reinterpret_cast<__m256d>(m.bits));
+}
+
 // Two slabs' bounds' roots in four lanes: a's lower and upper bound, then b's. The upper halves
 // of the vector registers are cleared before returning to code compiled without AVX (GCC 12 did
 // not clear them here, and SSE code after dirty upper halves ran 2.5 times slower on this
@@ -172,6 +177,9 @@ Intervals pieces_inside(const AxisQuadratic& c, const AxisQuadratic& lo, const A
       O::V{a.c.c1, a.c.c1, b.c.c1, b.c.c1} - O::V{a.lo.c1, a.hi.c1, b.lo.c1, b.hi.c1},
       O::V{a.c.c2, a.c.c2, b.c.c2, b.c.c2} - O::V{a.lo.c2, a.hi.c2, b.lo.c2, b.hi.c2}};
   const LaneRootsOf<O> r = lane_roots<O>(q, O::splat(t0), O::splat(t1));
+  const int one = bits(r.one);
+  const int two = bits(r.two);
+  const int slow = bits(r.slow);
   double first[4];
   double second[4];
   double coef[3][4];
@@ -181,11 +189,11 @@ Intervals pieces_inside(const AxisQuadratic& c, const AxisQuadratic& lo, const A
   _mm256_zeroupper();
   for (int k = 0; k < 4; ++k) {
     RootList& list = out[k];
-    if (((r.slow >> k) & 1) != 0) {
+    if (((slow >> k) & 1) != 0) {
       list = list_real_roots({coef[0][k], coef[1][k], coef[2][k], 0.0, 0.0}, t0, t1);
       continue;
     }
-    list.n = static_cast<std::size_t>(((r.one >> k) & 1) + ((r.two >> k) & 1));
+    list.n = static_cast<std::size_t>(((one >> k) & 1) + ((two >> k) & 1));
     list.x[0] = first[k];
     list.x[1] = second[k];
   }
@@ -201,8 +209,8 @@ Intervals slab_times(const AxisQuadratic& c, const AxisQuadratic& lo, const Axis
   const O::V q[3] = {O::V{c.c0, c.c0} - O::V{lo.c0, hi.c0}, O::V{c.c1, c.c1} - O::V{lo.c1, hi.c1},
                      O::V{c.c2, c.c2} - O::V{lo.c2, hi.c2}};
   const LaneRootsOf<O> r = lane_roots<O>(q, O::splat(t0), O::splat(t1));
-  return pieces_inside(c, lo, hi, t0, t1, lane_root_list<O>(r, 0, q, t0, t1),
-                       lane_root_list<O>(r, 1, q, t0, t1));
+  return pieces_inside(c, lo, hi, t0, t1, lane_root_list(r, 0, q, t0, t1),
+                       lane_root_list(r, 1, q, t0, t1));
 }
 
 void slab_times(const Slab& a, const Slab& b, double t0, double t1, Intervals (&out)[2],
