@@ -126,7 +126,7 @@ struct Constraint {
 // side has its own knee: between the knees both bounds are single quadratics.
 // Constraint con's grown slab on axis k over [t0, t1], a piece wholly on one side of each of its
 // sides' knees (the knees are its ends).
-Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, double t1) {
+inline Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, double t1) {
   const Inflation& rho = *con.rho;
   const double m = 0.5 * (t0 + t1);
   const Coord r_lo = rho.piece(rho.cap_m(k, -1), m >= rho.knee_s(k, -1));
@@ -139,7 +139,7 @@ Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, dou
 
 // Both knees of axis k's sides at or before the start, or both at or past the end (an instant or
 // unbounded turn, a short window): the grown slab over [0, t_end] is one piece, the common case.
-bool one_piece(const Constraint& con, int k, double t_end) {
+inline bool one_piece(const Constraint& con, int k, double t_end) {
   const double knee_lo_s = con.rho->knee_s(k, -1);
   const double knee_hi_s = con.rho->knee_s(k, +1);
   return (knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end);

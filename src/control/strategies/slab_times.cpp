@@ -121,8 +121,11 @@ RootList lane_root_list(const LaneRootsOf<NarrowOps>& r, int k, const NarrowOps:
 // The rest of the definition, given both bounds' roots: t0, t1 and the roots sorted by insertion
 // (at most six points), then each piece between consecutive points kept where its midpoint is
 // inside, joined to the one before where they touch.
-Intervals pieces_inside(const AxisQuadratic& c, const AxisQuadratic& lo, const AxisQuadratic& hi,
-                        double t0, double t1, const RootList& lo_roots, const RootList& hi_roots) {
+[[gnu::always_inline]] inline Intervals pieces_inside(const AxisQuadratic& c,
+                                                      const AxisQuadratic& lo,
+                                                      const AxisQuadratic& hi, double t0, double t1,
+                                                      const RootList& lo_roots,
+                                                      const RootList& hi_roots) {
   std::array<double, 6> pts;
   int np = 0;
   const auto add = [&pts, &np](double v) {
