@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <span>
 #include <vector>
 
 #include "geometry/first_root.hpp"
@@ -843,6 +844,129 @@ TEST(TwoBoxRejection, WideAndNarrowLanesAnswerTheSame) {
                              narrow.unsettled().begin(), narrow.unsettled().end()));
       ASSERT_EQ(wide.max_radius_m(), narrow.max_radius_m());
     }
+  }
+}
+
+// The window in pieces, each grown by a share of the whole's growth.
+void set_pieces(TwoBoxClearance::Boxes& b) {
+  b.pieces = TwoBoxClearance::Boxes::kMaxPieces;
+  for (int j = 0; j < b.pieces; ++j) {
+    const double share = (j + 1.0) / b.pieces;
+    b.piece_grow_lo_m[static_cast<std::size_t>(j)] = share * b.grow_lo_m;
+    b.piece_grow_hi_m[static_cast<std::size_t>(j)] = share * b.grow_hi_m;
+  }
+}
+
+// The wide lanes pack the lanes the grown box's pieces are left to test, from many groups of
+// four, into full groups. Fragments the pieces decide (those the whole window leaves in doubt)
+// mixed with fragments settled before, in groups of four of every pattern and at every offset
+// of the packed lanes, must each be answered as when alone, and the unsettled listed in order
+// as by the narrow lanes.
+TEST(TwoBoxRejection, PackedPiecesAnswerAsEachFragmentAlone) {
+  std::mt19937_64 rng(25);
+  int cleared_by_pieces = 0;
+  int left_by_pieces = 0;
+  for (int round = 0; round < 6; ++round) {
+    TwoBoxCase k = random_two_box_case(rng, 1000, round % 2 == 0);
+    TwoBoxClearance whole;
+    whole.run(k.fragments, k.boxes);
+    std::vector<FragmentState> decided;  // by the pieces
+    std::vector<FragmentState> settled;  // before them
+    for (std::size_t i = 0; i < k.fragments.size(); ++i) {
+      (whole.grown_clears()[i] ? settled : decided).push_back(k.fragments[i]);
+    }
+    ASSERT_GE(decided.size(), 40u) << round;
+    ASSERT_GE(settled.size(), 40u) << round;
+    set_pieces(k.boxes);
+    // Patterns 1..15 over and over (a bit for each lane drawn from `decided`), a pattern of 0
+    // every fifth group, and a tail of three that goes to the narrow lanes.
+    std::vector<FragmentState> mixed;
+    std::size_t next_decided = 0;
+    std::size_t next_settled = 0;
+    for (int group = 0; next_decided + 4 <= decided.size() && next_settled + 4 <= settled.size();
+         ++group) {
+      const int pattern = group % 5 == 4 ? 0 : 1 + group % 15;
+      for (int lane = 0; lane < 4; ++lane) {
+        mixed.push_back(((pattern >> lane) & 1) != 0 ? decided[next_decided++]
+                                                     : settled[next_settled++]);
+      }
+    }
+    for (int tail = 0; tail < 3; ++tail) mixed.push_back(decided[tail]);
+    TwoBoxClearance wide;
+    TwoBoxClearance narrow;
+    narrow.use_wide_lanes(false);
+    wide.run(mixed, k.boxes);
+    narrow.run(mixed, k.boxes);
+    ASSERT_TRUE(std::equal(wide.unsettled().begin(), wide.unsettled().end(),
+                           narrow.unsettled().begin(), narrow.unsettled().end()))
+        << round;
+    TwoBoxClearance alone;
+    for (std::size_t i = 0; i < mixed.size(); ++i) {
+      alone.run(std::span<const FragmentState>(&mixed[i], 1), k.boxes);
+      ASSERT_EQ(wide.clears()[i], alone.clears()[0]) << round << " " << i;
+      ASSERT_EQ(wide.grown_clears()[i], alone.grown_clears()[0]) << round << " " << i;
+      ASSERT_EQ(narrow.grown_clears()[i], alone.grown_clears()[0]) << round << " " << i;
+    }
+    for (const FragmentState& f : decided) {
+      alone.run(std::span<const FragmentState>(&f, 1), k.boxes);
+      ++(alone.grown_clears()[0] ? cleared_by_pieces : left_by_pieces);
+    }
+  }
+  // Both answers occur, so a lane answered with another's would show.
+  EXPECT_GT(cleared_by_pieces, 100);
+  EXPECT_GT(left_by_pieces, 100);
+}
+
+// The wide lanes' first loop keeps what the second needs only when the last run left more than a
+// few groups in doubt; otherwise the second gathers and tests its groups again. Runs in turn in
+// doubt and nearly all settled (the same fragments 100 km off, but three), each after either, on
+// one clearance: every run answers as the narrow lanes do.
+TEST(TwoBoxRejection, WideLanesAnswerAlikeAfterAnyRun) {
+  std::mt19937_64 rng(26);
+  for (int round = 0; round < 6; ++round) {
+    TwoBoxCase k = random_two_box_case(rng, 1001, round % 2 == 0);
+    // From the third round on, the grown box far larger, so that the first tier clears many a
+    // fragment of the box but not of the grown box, and the second tier must not take one
+    // answer for the other.
+    if (round >= 2) {
+      k.boxes.grow_lo_m *= 10.0;
+      k.boxes.grow_hi_m *= 10.0;
+    }
+    set_pieces(k.boxes);
+    std::vector<FragmentState> far_off = k.fragments;
+    for (FragmentState& f : far_off) f.position_m.x() += 1e5;
+    // Three left in doubt among the settled, in three groups of four: fewer than the first loop
+    // keeps for (a 64th of the groups).
+    TwoBoxClearance first;
+    first.run(k.fragments, k.boxes);
+    ASSERT_GE(first.unsettled().size(), 3u);
+    for (std::size_t j = 0; j < 3; ++j) {
+      const std::size_t from = static_cast<std::size_t>(first.unsettled()[j]);
+      far_off[400 * j] = k.fragments[from];
+    }
+    TwoBoxClearance wide;
+    int in_doubt_runs = 0;
+    for (const bool doubtful : {false, true, true, false, false, true, false}) {
+      const std::vector<FragmentState>& f = doubtful ? k.fragments : far_off;
+      TwoBoxClearance narrow;
+      narrow.use_wide_lanes(false);
+      wide.run(f, k.boxes);
+      narrow.run(f, k.boxes);
+      ASSERT_EQ(wide.first_tier_doubts(), narrow.first_tier_doubts()) << round;
+      ASSERT_TRUE(std::equal(wide.clears().begin(), wide.clears().end(), narrow.clears().begin()))
+          << round << " " << doubtful;
+      ASSERT_TRUE(std::equal(wide.grown_clears().begin(), wide.grown_clears().end(),
+                             narrow.grown_clears().begin()))
+          << round << " " << doubtful;
+      ASSERT_TRUE(std::equal(wide.unsettled().begin(), wide.unsettled().end(),
+                             narrow.unsettled().begin(), narrow.unsettled().end()))
+          << round << " " << doubtful;
+      in_doubt_runs += wide.first_tier_doubts() > 100 ? 1 : 0;
+      if (!doubtful) {
+        EXPECT_EQ(wide.first_tier_doubts(), 3u) << round;
+      }
+    }
+    EXPECT_EQ(in_doubt_runs, 3) << round;
   }
 }
 

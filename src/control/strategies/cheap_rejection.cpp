@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <optional>
 #include <utility>
 
@@ -213,8 +214,13 @@ struct WideOps {
     return reinterpret_cast<V>((reinterpret_cast<WideMask>(mag) & magnitude) |
                                (reinterpret_cast<WideMask>(sign) & ~magnitude));
   }
+  // SSE2's movmskpd on each half, as for sqrt: lane by lane, GCC extracts and masks each one.
   [[gnu::always_inline]] static int bits(const M& m) {
-    return static_cast<int>((m.bits[0] & 1) | (m.bits[1] & 2) | (m.bits[2] & 4) | (m.bits[3] & 8));
+    using Half = std::int64_t __attribute__((vector_size(16)));
+    const Half lo{m.bits[0], m.bits[1]};
+    const Half hi{m.bits[2], m.bits[3]};
+    return _mm_movemask_pd(reinterpret_cast<__m128d>(lo)) |
+           _mm_movemask_pd(reinterpret_cast<__m128d>(hi)) << 2;
   }
 };
 #endif
@@ -233,7 +239,9 @@ template <class O>
 struct BoxAccelOf {
   using V = typename O::V;
   V a[3];
-  V inv_2a[3];     // 1 / (2 a), or 0 where a = 0 (no vertex)
+  // -1 / (2 a), or 0 where a = 0 (no vertex): the vertex's time per unit of velocity (the sign
+  // here, as c1 (-1 / (2 a)) is -c1 / (2 a) exactly, and a NaN's sign is never seen).
+  V minus_inv_2a[3];
   V inv_a_z;       // 1 / a_z, or 0
   bool curved[3];  // a != 0
   V reach_m;       // |a|_1 t_end^2 + |lo|_1 + |hi|_1: the part of the margin's scale all share
@@ -242,12 +250,14 @@ using BoxAccel = BoxAccelOf<NarrowOps>;
 BoxAccel box_accel(const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
                    const Eigen::Vector3d& hi_m, double t_end_s) {
   BoxAccel acc;
+  double inv_2a[3];
   for (int i = 0; i < 3; ++i) {
     acc.a[i] = lanes::broadcast(a_mps2[i]);
     acc.curved[i] = a_mps2[i] != 0.0;
-    acc.inv_2a[i] = lanes::broadcast(acc.curved[i] ? 1.0 / (2.0 * a_mps2[i]) : 0.0);
+    inv_2a[i] = acc.curved[i] ? 1.0 / (2.0 * a_mps2[i]) : 0.0;
+    acc.minus_inv_2a[i] = lanes::broadcast(-inv_2a[i]);
   }
-  acc.inv_a_z = acc.inv_2a[2] + acc.inv_2a[2];
+  acc.inv_a_z = lanes::broadcast(inv_2a[2]) + lanes::broadcast(inv_2a[2]);
   acc.reach_m = lanes::broadcast(a_mps2.lpNorm<1>() * t_end_s * t_end_s + lo_m.lpNorm<1>() +
                                  hi_m.lpNorm<1>());
   return acc;
@@ -265,16 +275,19 @@ template <class V>
 
 // Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1]: its range there (the ends,
 // and the vertex where it lies inside) misses the slab. `curved` says c2 != 0 (the same for all
-// paths: the acceleration's component).
-template <class O, class V = typename O::V>
-[[gnu::always_inline]] inline typename O::M misses(V c0, V c1, V c2, V inv_2c2, bool curved, V t0,
-                                                   V t1, V lo, V hi) {
-  const V f0 = at(c0, c1, c2, t0);
+// paths: the acceleration's component), minus_inv_2c2 is -1 / (2 c2). kFromStart: t0 = 0, where the
+// value is c0 itself when c1 and c2 are finite (c0 + 0 (c1 + 0 c2) differs from it at most in a
+// zero's sign, which the comparisons below do not see); only for a caller whose answer is void
+// where they are not.
+template <class O, bool kFromStart = false, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M misses(V c0, V c1, V c2, V minus_inv_2c2, bool curved,
+                                                   V t0, V t1, V lo, V hi) {
+  const V f0 = kFromStart ? c0 : at(c0, c1, c2, t0);
   const V f1 = at(c0, c1, c2, t1);
   V low = O::min(f0, f1);
   V high = O::max(f0, f1);
   if (curved) {
-    const V ts = -c1 * inv_2c2;
+    const V ts = c1 * minus_inv_2c2;
     const typename O::M vertex_inside = O::gt(ts, t0) & O::lt(ts, t1);
     const V fv = O::select(vertex_inside, at(c0, c1, c2, ts), f0);
     low = O::min(low, fv);
@@ -317,17 +330,19 @@ template <class O, class V = typename O::V>
   return box;
 }
 
-// The first stage: some coordinate stays outside its slab over the whole interval.
+// The first stage: some coordinate stays outside its slab over the whole interval. Void where
+// the box is not usable: its scale then holds a non-finite d, v or a (the reach), so where it is
+// usable all three are finite, as misses<O, true> asks.
 template <class O, class V = typename O::V>
 [[gnu::always_inline]] inline typename O::M box_ranges_miss(const V (&d)[3], const V (&v)[3],
                                                             const BoxAccelOf<O>& acc,
                                                             const GrownBox<O>& box, V t_end) {
   const V zero{};
-  typename O::M miss = misses<O>(d[0], v[0], acc.a[0], acc.inv_2a[0], acc.curved[0], zero, t_end,
-                                 box.lo[0], box.hi[0]);
+  typename O::M miss = misses<O, true>(d[0], v[0], acc.a[0], acc.minus_inv_2a[0], acc.curved[0],
+                                       zero, t_end, box.lo[0], box.hi[0]);
   for (int i = 1; i < 3; ++i) {
-    miss = miss | misses<O>(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], zero, t_end,
-                            box.lo[i], box.hi[i]);
+    miss = miss | misses<O, true>(d[i], v[i], acc.a[i], acc.minus_inv_2a[i], acc.curved[i], zero,
+                                  t_end, box.lo[i], box.hi[i]);
   }
   return miss;
 }
@@ -366,29 +381,30 @@ template <class O, class V = typename O::V>
   const V w1 = O::min(last + widen, t_end);
   typename O::M miss = O::none_of(window);
   for (int i = 0; i < 2; ++i) {
-    miss = miss | (window & misses<O>(d[i], v[i], acc.a[i], acc.inv_2a[i], acc.curved[i], w0, w1,
-                                      box.lo[i], box.hi[i]));
+    miss = miss | (window & misses<O>(d[i], v[i], acc.a[i], acc.minus_inv_2a[i], acc.curved[i], w0,
+                                      w1, box.lo[i], box.hi[i]));
   }
   return miss;
 }
 
 // Both stages: the box test for a lane's worth of paths at once, each over its own [0, t_end];
 // reach_m is |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
+// Lanes in `settled` (a bit each) are answered too, but the caller ignores them: the window's
+// roots only where the ranges left a path in doubt that matters, the same answers, cheaper.
 template <class O, class V = typename O::V>
 [[gnu::always_inline]] inline typename O::M box_clear(const V (&d)[3], const V (&v)[3],
                                                       const BoxAccelOf<O>& acc, const V (&lo_m)[3],
                                                       const V (&hi_m)[3], V grow, V t_end,
-                                                      V reach_m) {
+                                                      V reach_m, int settled) {
   const GrownBox<O> box = grow_box<O>(d, v, lo_m, hi_m, grow, t_end, reach_m);
   const typename O::M by_ranges = box.usable & box_ranges_miss<O>(d, v, acc, box, t_end);
-  // The window's roots only where the ranges left a path in doubt: the same answer, cheaper.
-  if (O::bits(by_ranges) == (1 << O::kWidth) - 1) return by_ranges;
+  if ((O::bits(by_ranges) | settled) == (1 << O::kWidth) - 1) return by_ranges;
   return by_ranges | (box.usable & box_window_miss<O>(d, v, acc, box, t_end));
 }
 [[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
                                              const BoxAccel& acc, const Lanes (&lo_m)[3],
                                              const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
-  return box_clear<NarrowOps>(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m);
+  return box_clear<NarrowOps>(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m, 0);
 }
 
 // ---- edge-min's two boxes ----------------------------------------------------------------------
@@ -550,12 +566,14 @@ template <class O, class Index>
 }
 
 // The first tier's answer for W fragments: bit k set when fragment k certainly clears the box
-// (bit 0 of the pair) and the grown box (bit 1), and the interval used.
+// (bit 0 of the pair) and the grown box (bit 1), and the interval used; and the positions
+// relative to the frame's origin, which the second tier starts from.
 template <class O>
 struct Far {
   typename O::M box;
   typename O::M grown;
   typename O::V t;
+  typename O::V rel[3];
 };
 template <class O>
 [[gnu::always_inline]] inline Far<O> first_tier_test(const FirstTier& p, const Gathered<O>& g) {
@@ -576,7 +594,9 @@ template <class O>
   // At least the interval edge-min's solve examines.
   const V t = interval_bound<O>(p.horizon, g.p[1], g.v[1], O::splat(p.ground) + g.radius);
   Far<O> out{stays_far<O>(p.box, rel2, rv_l1, g.radius, t),
-             stays_far<O>(p.grown_box, rel2, rvg_l1, g.radius, O::min(O::splat(p.window), t)), t};
+             stays_far<O>(p.grown_box, rel2, rvg_l1, g.radius, O::min(O::splat(p.window), t)),
+             t,
+             {rel[0], rel[1], rel[2]}};
   if (!p.grown) out.grown = O::ge(t, t) | O::lt(t, t);  // all set (t is never NaN)
   return out;
 }
@@ -621,9 +641,11 @@ std::size_t first_tier_narrow(const FragmentState* f, std::size_t n, const First
 template <class O>
 struct SecondTierOf {
   using V = typename O::V;
-  V origin[3];
   V frame_v[3];
   V grown_v[3];
+  // grown_v and frame_v the same bits, so the grown box's velocities are the box's (== would take
+  // -0 for +0, and the zero's sign can reach a quotient's).
+  bool same_frame;
   V axes[3][3];
   BoxAccelOf<O> acc;
   BoxAccelOf<O> grown_acc;
@@ -644,6 +666,34 @@ struct SecondTierOf {
 };
 using SecondTier = SecondTierOf<NarrowOps>;
 
+// What the second tier takes for a lane's worth of fragments: their positions relative to the
+// frame's origin (the first tier's numbers), world velocities and radii, and the first tier's
+// answer: each one's interval and which boxes it cleared (a bit each).
+template <class O>
+struct Doubts {
+  typename O::V rel[3];
+  typename O::V v[3];
+  typename O::V radius;
+  typename O::V t;
+  int box;
+  int grown;
+};
+template <class O>
+[[gnu::always_inline]] inline Doubts<O> doubts_of(const Gathered<O>& g, const Far<O>& far) {
+  return {{far.rel[0], far.rel[1], far.rel[2]},
+          {g.v[0], g.v[1], g.v[2]},
+          g.radius,
+          far.t,
+          O::bits(far.box),
+          O::bits(far.grown)};
+}
+
+// Which lanes certainly clear the box and the grown box, a bit each.
+struct Verdict {
+  int box;
+  int grown;
+};
+
 // Where the second tier writes its answers. Raw pointers: a store through a char may alias
 // anything, the vectors' own pointers included.
 struct Answers {
@@ -656,22 +706,28 @@ struct Answers {
 // The grown box piece by piece, for paths whose whole window left it in doubt (d, w: their
 // coordinates and velocities in the grown box's frame; tg: each one's window): set where every
 // piece's box is missed over the piece's part of [0, tg]. Each piece's test starts at its own
-// start time, so the path is moved there first (rounding far inside the box test's margin).
+// start time, so the path is moved there first (rounding far inside the box test's margin). The
+// lanes in `settled` are answered too but not wanted: the pieces stop once every other lane has
+// failed one, and a piece that is past for all the others is not tested.
 template <class O>
 [[gnu::always_inline]] inline typename O::M grown_by_pieces(const SecondTierOf<O>& q,
                                                             const typename O::V (&d)[3],
                                                             const typename O::V (&w)[3],
-                                                            typename O::V radius,
-                                                            typename O::V tg) {
+                                                            typename O::V radius, typename O::V tg,
+                                                            int settled) {
   using V = typename O::V;
+  constexpr int all = (1 << O::kWidth) - 1;
   const V zero{};
   typename O::M clear = O::eq(zero, zero);
+  int open = ~settled & all;  // the wanted lanes every piece so far has cleared
   for (int j = 0; j < q.pieces; ++j) {
     const V t0 = q.piece_t0[j];
     const V t1 = O::min(tg, q.piece_t1[j]);
     // The path's window ends before this piece (strictly: a window ending at a piece's start
     // still has that instant to test, and a window of 0 s its one instant in the first piece).
     const typename O::M past = O::lt(t1, t0);
+    const int skip = (~open | O::bits(past)) & all;
+    if (skip == all) continue;
     const BoxAccelOf<O>& acc = q.piece_acc[j];
     V dj[3];
     V wj[3];
@@ -681,59 +737,72 @@ template <class O>
     }
     const V span = O::max(t1 - t0, zero);
     const V reach = q.a_l1 * (span * span) + acc.reach_m;
-    clear = clear &
-            (past | box_clear<O>(dj, wj, acc, q.piece_lo[j], q.piece_hi[j], radius, span, reach));
-    if (O::bits(clear) == 0) break;
+    clear = clear & (past | box_clear<O>(dj, wj, acc, q.piece_lo[j], q.piece_hi[j], radius, span,
+                                         reach, skip));
+    open &= O::bits(clear);
+    if (open == 0) break;
   }
   return clear;
 }
 
-// The second tier for a lane's worth of fragments (index[k] in lane k), given their states and
-// the first tier's answer: the box tests in the frame's axes, each over the fragment's interval
-// (the first tier's bound on it) and, for the grown box, the window within it. Each lane's
-// answer is its own, whatever its neighbours; only the lanes in `live` are written, in order.
+// A lane's worth of paths in the grown box's frame for its pieces: coordinates, velocities,
+// radii and windows.
 template <class O>
-[[gnu::always_inline]] inline void second_tier(const SecondTierOf<O>& q, const Gathered<O>& g,
-                                               const Far<O>& far,
-                                               const std::size_t (&index)[O::kWidth], int live,
-                                               Answers& out) {
+struct GrownPaths {
+  typename O::V d[3];
+  typename O::V w[3];
+  typename O::V radius;
+  typename O::V tg;
+};
+
+// The second tier for a lane's worth of fragments, all but the grown box's pieces: the box tests
+// in the frame's axes, each over the fragment's interval (the first tier's bound on it) and, for
+// the grown box, the window within it, for the lanes the first tier left in doubt of each. Each
+// lane's answer is its own, whatever its neighbours. Where the grown box is left in doubt,
+// `grown` gets the paths for the pieces.
+template <class O>
+[[gnu::always_inline]] inline Verdict second_tier_whole(const SecondTierOf<O>& q,
+                                                        const Doubts<O>& in, GrownPaths<O>& grown) {
   using V = typename O::V;
   constexpr int all = (1 << O::kWidth) - 1;
+  const V rv[3] = {in.v[0] - q.frame_v[0], in.v[1] - q.frame_v[1], in.v[2] - q.frame_v[2]};
   V d[3];
   V w[3];
-  V wg[3];
   for (int c = 0; c < 3; ++c) {
-    const V rel[3] = {g.p[0] - q.origin[0], g.p[1] - q.origin[1], g.p[2] - q.origin[2]};
-    const V rv[3] = {g.v[0] - q.frame_v[0], g.v[1] - q.frame_v[1], g.v[2] - q.frame_v[2]};
-    const V rvg[3] = {g.v[0] - q.grown_v[0], g.v[1] - q.grown_v[1], g.v[2] - q.grown_v[2]};
-    d[c] = dot(rel, q.axes[c]);
+    d[c] = dot(in.rel, q.axes[c]);
     w[c] = dot(rv, q.axes[c]);
-    wg[c] = dot(rvg, q.axes[c]);
   }
-  const V t = far.t;
-  int box_bits = O::bits(far.box);
-  if (box_bits != all) {
+  const V t = in.t;
+  Verdict out{in.box, in.grown};
+  if (out.box != all) {
     const V reach = q.a_l1 * (t * t) + q.acc.reach_m;
-    box_bits |= O::bits(box_clear<O>(d, w, q.acc, q.lo, q.hi, g.radius, t, reach));
+    out.box |= O::bits(box_clear<O>(d, w, q.acc, q.lo, q.hi, in.radius, t, reach, out.box));
   }
-  int grown_bits = O::bits(far.grown);
-  if (grown_bits != all) {
+  if (out.grown != all) {
+    V wg[3] = {w[0], w[1], w[2]};
+    if (!q.same_frame) {
+      const V rvg[3] = {in.v[0] - q.grown_v[0], in.v[1] - q.grown_v[1], in.v[2] - q.grown_v[2]};
+      for (int c = 0; c < 3; ++c) wg[c] = dot(rvg, q.axes[c]);
+    }
     const V tg = O::min(q.window, t);
     const V reach = q.a_l1 * (tg * tg) + q.grown_acc.reach_m;
-    grown_bits |= O::bits(box_clear<O>(d, wg, q.grown_acc, q.glo, q.ghi, g.radius, tg, reach));
-    if (grown_bits != all && q.pieces > 0) {
-      grown_bits |= O::bits(grown_by_pieces<O>(q, d, wg, g.radius, tg));
-    }
+    out.grown |=
+        O::bits(box_clear<O>(d, wg, q.grown_acc, q.glo, q.ghi, in.radius, tg, reach, out.grown));
+    grown = {{d[0], d[1], d[2]}, {wg[0], wg[1], wg[2]}, in.radius, tg};
   }
-  const int settled = box_bits & grown_bits;
-  for (int k = 0; k < O::kWidth; ++k) {
-    if (((live >> k) & 1) == 0) continue;
-    const std::size_t i = index[k];
-    out.clears[i] = static_cast<char>((box_bits >> k) & 1);
-    out.grown_clears[i] = static_cast<char>((grown_bits >> k) & 1);
-    out.unsettled[out.unsettled_count] = static_cast<std::int32_t>(i);
-    out.unsettled_count += static_cast<std::size_t>(1 - ((settled >> k) & 1));
+  return out;
+}
+
+// The whole second tier, pieces included.
+template <class O>
+[[gnu::always_inline]] inline Verdict second_tier(const SecondTierOf<O>& q, const Doubts<O>& in) {
+  constexpr int all = (1 << O::kWidth) - 1;
+  GrownPaths<O> g;
+  Verdict out = second_tier_whole<O>(q, in, g);
+  if (out.grown != all && q.pieces > 0) {
+    out.grown |= O::bits(grown_by_pieces<O>(q, g.d, g.w, g.radius, g.tg, out.grown));
   }
+  return out;
 }
 
 // The second tier's constants for a run's boxes.
@@ -742,9 +811,10 @@ SecondTier second_tier_constants(const TwoBoxClearance::Boxes& boxes) {
   const Eigen::Vector3d grown_lo = boxes.lo_m - boxes.grow_lo_m;
   const Eigen::Vector3d grown_hi = boxes.hi_m + boxes.grow_hi_m;
   SecondTier q;
-  broadcast3(frame.origin_m, q.origin);
   broadcast3(frame.velocity_mps, q.frame_v);
   broadcast3(boxes.grown_velocity_mps, q.grown_v);
+  q.same_frame = std::memcmp(frame.velocity_mps.data(), boxes.grown_velocity_mps.data(),
+                             3 * sizeof(double)) == 0;
   for (int c = 0; c < 3; ++c) broadcast3(frame.axes[c], q.axes[c]);
   q.acc = box_accel(boxes.a_mps2, boxes.lo_m, boxes.hi_m, 0.0);
   q.grown_acc = box_accel(boxes.a_mps2, grown_lo, grown_hi, 0.0);
@@ -788,8 +858,43 @@ void second_tier_over(const FragmentState* f, const FirstTier& p, LazySecondTier
     const std::size_t index[2] = {static_cast<std::size_t>(doubt[j]),
                                   static_cast<std::size_t>(doubt[j1])};
     const Gathered<NarrowOps> g = gather<NarrowOps>(f, [&](int k) { return index[k]; });
-    second_tier<NarrowOps>(q, g, first_tier_test<NarrowOps>(p, g), index, j1 > j ? 3 : 1, out);
+    const Verdict s = second_tier<NarrowOps>(q, doubts_of(g, first_tier_test<NarrowOps>(p, g)));
+    const int settled = s.box & s.grown;
+    for (int k = 0; k < (j1 > j ? 2 : 1); ++k) {
+      const std::size_t i = index[k];
+      out.clears[i] = static_cast<char>((s.box >> k) & 1);
+      out.grown_clears[i] = static_cast<char>((s.grown >> k) & 1);
+      out.unsettled[out.unsettled_count] = static_cast<std::int32_t>(i);
+      out.unsettled_count += static_cast<std::size_t>(1 - ((settled >> k) & 1));
+    }
   }
+}
+
+// The rows of four the wide pass keeps of a group in doubt (TwoBoxClearance::kept_): the
+// positions relative to the origin, the velocities, the radii and the intervals.
+constexpr std::size_t kKeptRows = 8;
+
+// The lanes the grown box's pieces are left to test, packed: the pieces are the costliest stage,
+// and most groups that reach them do so for one or two lanes; packed, they run over full groups
+// of four, each lane with the same numbers as in its own group. Lane l of row r at
+// rows[r * stride + l], the rows GrownPaths' numbers in order, and the lane's group and place in
+// it (4 group + lane) at group_lane[l].
+constexpr std::size_t kPieceRows = 8;
+struct PieceLanes {
+  double* rows;
+  std::size_t stride;
+  std::int32_t* group_lane;
+  std::size_t count;
+};
+
+// The wide pass's work arrays for n fragments: kept rows for n / 4 groups, and 3 doubles to align
+// them on 32 bytes (a row of four in one cache line); a packed row has room for every lane of the
+// groups and the spare lanes of its last store of four.
+constexpr std::size_t kept_doubles(std::size_t n) {
+  return 4 * kKeptRows * (n / 4 + 1) + 3;
+}
+constexpr std::size_t piece_stride(std::size_t n) {
+  return n + 4;
 }
 
 #if defined(FRAGSIM_WIDE_LANES)
@@ -834,7 +939,7 @@ template <int N>
 [[gnu::target("avx2"), gnu::always_inline]] inline BoxAccelOf<WideOps> widen(const BoxAccel& a) {
   BoxAccelOf<WideOps> w;
   widen(a.a, w.a);
-  widen(a.inv_2a, w.inv_2a);
+  widen(a.minus_inv_2a, w.minus_inv_2a);
   w.inv_a_z = widen(a.inv_a_z);
   for (int c = 0; c < 3; ++c) w.curved[c] = a.curved[c];
   w.reach_m = widen(a.reach_m);
@@ -843,9 +948,9 @@ template <int N>
 [[gnu::target("avx2"), gnu::always_inline]] inline SecondTierOf<WideOps> widen(
     const SecondTier& q) {
   SecondTierOf<WideOps> w;
-  widen(q.origin, w.origin);
   widen(q.frame_v, w.frame_v);
   widen(q.grown_v, w.grown_v);
+  w.same_frame = q.same_frame;
   for (int c = 0; c < 3; ++c) widen(q.axes[c], w.axes[c]);
   w.acc = widen(q.acc);
   w.grown_acc = widen(q.grown_acc);
@@ -866,49 +971,257 @@ template <int N>
   return w;
 }
 
-// Four fragments' states from f, and which of the four the first tier left in doubt (a bit each).
+// Four fragments' states from f.
 [[gnu::target("avx2"), gnu::always_inline]] inline Gathered<WideOps> load_four(
     const FragmentState* f, bool packed) {
   return packed ? gather_packed(f) : gather<WideOps>(f, [](int k) { return k; });
 }
-[[gnu::target("avx2"), gnu::always_inline]] inline int open_lanes(const Far<WideOps>& far) {
-  return ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
+
+// What the first loop keeps of a group for the second, kKeptRows rows of four, in two parts. The
+// rows the first tier's test no longer needs once it has begun (x and z of the positions
+// relative to the origin and of the velocities) are stored before the test, whether the group
+// turns out in doubt or not: held until that is known, they would be live across the test and
+// spilled (the flight's rejection about 4% slower so). The rest, live to the end anyway, only for
+// a group in doubt, by keep_late.
+[[gnu::target("avx2"), gnu::always_inline]] inline void keep_early(const FirstTier& p,
+                                                                   const Gathered<WideOps>& g,
+                                                                   double* kept) {
+  for (int c = 0; c < 3; c += 2) {
+    const Wide rel = g.p[c] - WideOps::splat(p.origin[c]);  // as first_tier_test's
+    _mm256_storeu_pd(kept + 4 * c, reinterpret_cast<__m256d>(rel));
+    _mm256_storeu_pd(kept + 4 * (3 + c), reinterpret_cast<__m256d>(g.v[c]));
+  }
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline void keep_late(const Gathered<WideOps>& g,
+                                                                  const Far<WideOps>& far,
+                                                                  double* kept) {
+  _mm256_storeu_pd(kept + 4 * 1, reinterpret_cast<__m256d>(far.rel[1]));
+  _mm256_storeu_pd(kept + 4 * 4, reinterpret_cast<__m256d>(g.v[1]));
+  _mm256_storeu_pd(kept + 4 * 6, reinterpret_cast<__m256d>(g.radius));
+  _mm256_storeu_pd(kept + 4 * 7, reinterpret_cast<__m256d>(far.t));
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline Doubts<WideOps> kept_doubts(const double* kept,
+                                                                               int bits) {
+  Doubts<WideOps> in;
+  for (int c = 0; c < 3; ++c) {
+    in.rel[c] = WideOps::load(kept + 4 * c);
+    in.v[c] = WideOps::load(kept + 4 * (3 + c));
+  }
+  in.radius = WideOps::load(kept + 4 * 6);
+  in.t = WideOps::load(kept + 4 * 7);
+  in.box = bits & 15;
+  in.grown = bits >> 4;
+  return in;
 }
 
-// Whole groups of four here (the mask's bits by AVX's own instruction, which only code compiled
-// for AVX may use), then the groups with a fragment in doubt through the second tier four lanes
-// at once. Two loops: the first, which settled debris runs through with nothing in doubt, stays
-// small, its constants in registers; the second gathers and tests its groups again (the same
-// numbers) rather than keep them. The rest two at a time through the first tier, their doubts
-// listed in `doubt` for second_tier_over; the count of those is returned, every doubt's in
-// *doubts. `groups` has room for n / 4 entries.
-[[gnu::target("avx2")]] std::size_t both_tiers_wide(const FragmentState* f, std::size_t n,
-                                                    const FirstTier& p, bool packed,
-                                                    LazySecondTier& q, Answers& out,
-                                                    std::int32_t* groups, std::int32_t* doubt,
-                                                    double* r_max, std::size_t* doubts) {
+// A group's answers written whole: the lanes the first tier settled have both flags set, as
+// they were, and no unsettled entry. Per pattern of bits, each lane's flag as a byte (clears_ and
+// grown_clears_ are runs of chars), which lanes are set, in order (to list them), and the
+// permutation of 32-bit halves that moves those lanes of four doubles to the front, in order.
+struct GroupTables {
+  alignas(32) std::int32_t to_front[16][8];
+  std::int32_t set[16][4];
+  std::uint32_t bytes[16];
+};
+constexpr GroupTables group_tables() {
+  GroupTables t{};
+  for (int m = 0; m < 16; ++m) {
+    int listed = 0;
+    for (int k = 0; k < 4; ++k) {
+      if (((m >> k) & 1) == 0) continue;
+      t.bytes[m] |= std::uint32_t{1} << (8 * k);
+      t.to_front[m][2 * listed] = 2 * k;
+      t.to_front[m][2 * listed + 1] = 2 * k + 1;
+      t.set[m][listed++] = k;
+    }
+  }
+  return t;
+}
+constexpr GroupTables kGroupTables = group_tables();
+
+// Four entries at `to`, base + each lane of `lanes` in order; returns how many of them count.
+// The caller has room for four.
+[[gnu::target("avx2"), gnu::always_inline]] inline std::size_t list_lanes(int lanes,
+                                                                          std::int32_t base,
+                                                                          std::int32_t* to) {
+  const __m128i listed =
+      _mm_add_epi32(_mm_set1_epi32(base),
+                    _mm_loadu_si128(reinterpret_cast<const __m128i*>(kGroupTables.set[lanes])));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(to), listed);
+  return static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(lanes)));
+}
+
+[[gnu::target("avx2"), gnu::always_inline]] inline void write_four(const Verdict& s,
+                                                                   std::size_t start,
+                                                                   Answers& out) {
+  std::memcpy(out.clears + start, &kGroupTables.bytes[s.box], 4);
+  std::memcpy(out.grown_clears + start, &kGroupTables.bytes[s.grown], 4);
+  // Room for four entries: at most `start` are listed before this group, which ends within the
+  // fragments.
+  out.unsettled_count += list_lanes(~(s.box & s.grown) & 15, static_cast<std::int32_t>(start),
+                                    out.unsettled + out.unsettled_count);
+}
+
+// Appends the lanes of `g` in `lanes` (a bit each) of group `group`: each row moved to the front
+// by one permutation and stored whole (four doubles), the spare lanes overwritten by the next
+// group's or never read. stride >= the lanes appended + 3.
+[[gnu::target("avx2"), gnu::always_inline]] inline void put_front(double* at, const Wide& x,
+                                                                  __m256i order) {
+  const __m256 moved = _mm256_permutevar8x32_ps(reinterpret_cast<__m256>(x), order);
+  _mm256_storeu_pd(at, reinterpret_cast<__m256d>(moved));
+}
+[[gnu::target("avx2"), gnu::always_inline]] inline void pack(const GrownPaths<WideOps>& g,
+                                                             int lanes, std::size_t group,
+                                                             PieceLanes& to) {
+  const __m256i order =
+      _mm256_load_si256(reinterpret_cast<const __m256i*>(kGroupTables.to_front[lanes]));
+  double* const at = to.rows + to.count;
+  for (std::size_t c = 0; c < 3; ++c) {
+    put_front(at + c * to.stride, g.d[c], order);
+    put_front(at + (3 + c) * to.stride, g.w[c], order);
+  }
+  put_front(at + 6 * to.stride, g.radius, order);
+  put_front(at + 7 * to.stride, g.tg, order);
+  to.count += list_lanes(lanes, static_cast<std::int32_t>(4 * group), to.group_lane + to.count);
+}
+
+// The pieces over the packed lanes, four at a time; each lane cleared sets its grown bit (bit 4 +
+// lane) in its group's verdict. The last group's spare lanes are garbage, answered but ignored.
+[[gnu::target("avx2"), gnu::always_inline]] inline void pieces_over(const SecondTierOf<WideOps>& q,
+                                                                    const PieceLanes& lanes,
+                                                                    std::int32_t* verdicts) {
+  using O = WideOps;
+  for (std::size_t j = 0; j < lanes.count; j += O::kWidth) {
+    const double* const at = lanes.rows + j;
+    GrownPaths<O> g;
+    for (std::size_t c = 0; c < 3; ++c) {
+      g.d[c] = O::load(at + c * lanes.stride);
+      g.w[c] = O::load(at + (3 + c) * lanes.stride);
+    }
+    g.radius = O::load(at + 6 * lanes.stride);
+    g.tg = O::load(at + 7 * lanes.stride);
+    const int live = static_cast<int>(std::min<std::size_t>(lanes.count - j, O::kWidth));
+    const int spare = 15 & ~((1 << live) - 1);
+    const int clear = O::bits(grown_by_pieces<O>(q, g.d, g.w, g.radius, g.tg, spare));
+    for (int k = 0; k < live; ++k) {
+      const std::int32_t place = lanes.group_lane[j + static_cast<std::size_t>(k)];
+      verdicts[place >> 2] |= ((clear >> k) & 1) << (4 + (place & 3));
+    }
+  }
+}
+
+// The first loop over the whole groups of four (the mask's bits by AVX's own instruction, which
+// only code compiled for AVX may use): lists the groups with a fragment in doubt in `groups` and
+// returns how many; the largest radius goes to r_max, the count of doubts to `doubts`. kKeep: with
+// what the second loop needs of each group (`kept`, kKeptRows rows of four, and its bits in
+// `verdicts`), for flying debris, nearly all in doubt; else nothing more, the loop as lean as
+// settled debris (none in doubt) wants it, and the second loop gathers and tests its few groups
+// again (the same numbers). `kept` is restrict, or its stores could alias `p` and the loop would
+// load p's numbers for each group.
+template <bool kKeep>
+[[gnu::target("avx2"), gnu::always_inline]] inline std::size_t first_loop(
+    const FragmentState* f, std::size_t n, const FirstTier& p, bool packed, std::int32_t* groups,
+    std::int32_t* verdicts, double* __restrict kept, Wide& r_max, std::size_t& doubts) {
+  using O = WideOps;
+  // Locals, which no store through `kept` or `groups` can alias.
+  O::V r = r_max;
+  std::size_t counted = 0;
+  std::size_t open_groups = 0;
+  for (std::size_t i = 0; i + O::kWidth <= n; i += O::kWidth) {
+    const Gathered<O> g = load_four(f + i, packed);
+    r = O::max(r, g.radius);
+    double* const slot = kept + 4 * kKeptRows * open_groups;
+    if constexpr (kKeep) keep_early(p, g, slot);
+    const Far<O> far = first_tier_test<O>(p, g);
+    if constexpr (kKeep) {
+      const int box = _mm256_movemask_pd(reinterpret_cast<__m256d>(far.box.bits));
+      const int grown = _mm256_movemask_pd(reinterpret_cast<__m256d>(far.grown.bits));
+      const int open = ~(box & grown) & 15;
+      counted += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
+      if (open == 0) continue;
+      keep_late(g, far, slot);
+      verdicts[open_groups] = box | grown << 4;
+      groups[open_groups] = static_cast<std::int32_t>(i);
+      ++open_groups;
+    } else {
+      const int open =
+          ~_mm256_movemask_pd(reinterpret_cast<__m256d>((far.box & far.grown).bits)) & 15;
+      counted += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
+      groups[open_groups] = static_cast<std::int32_t>(i);
+      open_groups += static_cast<std::size_t>(open != 0);
+    }
+  }
+  r_max = r;
+  doubts += counted;
+  return open_groups;
+}
+
+// Out of line: inlined beside first_loop<false> and the second loop, its registers came out worse
+// (about 5% more instructions over the flight); first_loop<false> inlined is the loop as it was.
+[[gnu::target("avx2"), gnu::noinline]] std::size_t keeping_first_loop(
+    const FragmentState* f, std::size_t n, const FirstTier& p, bool packed, std::int32_t* groups,
+    std::int32_t* verdicts, double* __restrict kept, Wide& r_max, std::size_t& doubts) {
+  return first_loop<true>(f, n, p, packed, groups, verdicts, kept, r_max, doubts);
+}
+
+// What first_loop<true> keeps of the groups first_loop<false> listed, gathered and tested again
+// (the same numbers).
+[[gnu::target("avx2"), gnu::always_inline]] inline void keep_again(
+    const FragmentState* f, const FirstTier& p, bool packed, const std::int32_t* groups,
+    std::size_t open_groups, std::int32_t* verdicts, double* kept) {
+  using O = WideOps;
+  for (std::size_t k = 0; k < open_groups; ++k) {
+    double* const slot = kept + 4 * kKeptRows * k;
+    const Gathered<O> g = load_four(f + groups[k], packed);
+    keep_early(p, g, slot);
+    const Far<O> far = first_tier_test<O>(p, g);
+    keep_late(g, far, slot);
+    verdicts[k] = O::bits(far.box) | O::bits(far.grown) << 4;
+  }
+}
+
+// The whole groups of four through first_loop, then those with a fragment in doubt through the
+// second tier four lanes at once. Two loops, so that the first, which settled debris runs
+// through with nothing in doubt, stays small, its constants in registers. The second leaves the
+// grown box's pieces to the lanes it packs (`pieces`), and the answers are written once those
+// are done. *keep says whether the first loop keeps what the second needs, and is set for the
+// next run: whether this one left more than a few groups in doubt (a guess at the next; it
+// changes how fast a run is, never what it answers). The rest two at a time through the first
+// tier, their doubts listed in `doubt` for second_tier_over; the count of those is returned,
+// every doubt's in *doubts. `groups`, `verdicts` and `kept` have room for n / 4 groups.
+[[gnu::target("avx2")]] std::size_t both_tiers_wide(
+    const FragmentState* f, std::size_t n, const FirstTier& p, bool packed, LazySecondTier& q,
+    Answers& out, std::int32_t* groups, std::int32_t* verdicts, double* kept, PieceLanes pieces,
+    bool* keep, std::int32_t* doubt, double* r_max, std::size_t* doubts) {
   using O = WideOps;
   O::V r = O::splat(0.0);
   std::size_t wide_doubts = 0;
-  std::size_t open_groups = 0;
-  std::size_t i = 0;
-  for (; i + O::kWidth <= n; i += O::kWidth) {
-    const Gathered<O> g = load_four(f + i, packed);
-    r = O::max(r, g.radius);
-    const int open = open_lanes(first_tier_test<O>(p, g));
-    groups[open_groups] = static_cast<std::int32_t>(i);
-    open_groups += static_cast<std::size_t>(open != 0);
-    wide_doubts += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(open)));
-  }
+  const bool kept_rows = *keep;
+  const std::size_t open_groups =
+      kept_rows ? keeping_first_loop(f, n, p, packed, groups, verdicts, kept, r, wide_doubts)
+                : first_loop<false>(f, n, p, packed, groups, verdicts, kept, r, wide_doubts);
+  const std::size_t i = n / O::kWidth * O::kWidth;
+  // Keeping costs settled debris about 7% of the first loop's instructions; not keeping costs a
+  // group in doubt its gathering and first tier again, about a third of its second tier's.
+  *keep = 64 * open_groups > n / O::kWidth;
   if (open_groups > 0) {
     const SecondTierOf<O> wq = widen(q.get());
+    if (!kept_rows) keep_again(f, p, packed, groups, open_groups, verdicts, kept);
     for (std::size_t k = 0; k < open_groups; ++k) {
-      const auto start = static_cast<std::size_t>(groups[k]);
-      const Gathered<O> g = load_four(f + start, packed);
-      const Far<O> far = first_tier_test<O>(p, g);
-      const std::size_t index[O::kWidth] = {start, start + 1, start + 2, start + 3};
-      second_tier<O>(wq, g, far, index, open_lanes(far), out);
+      const Doubts<O> in = kept_doubts(kept + 4 * kKeptRows * k, verdicts[k]);
+      GrownPaths<O> g;
+      const Verdict s = second_tier_whole<O>(wq, in, g);
+      if (s.grown != 15 && wq.pieces > 0) pack(g, ~s.grown & 15, k, pieces);
+      verdicts[k] = s.box | s.grown << 4;
     }
+    pieces_over(wq, pieces, verdicts);
+    // A copy the stores through char cannot alias: its pointers stay in registers.
+    Answers to = out;
+    for (std::size_t k = 0; k < open_groups; ++k) {
+      const Verdict s{verdicts[k] & 15, verdicts[k] >> 4};
+      write_four(s, static_cast<std::size_t>(groups[k]), to);
+    }
+    out.unsettled_count = to.unsettled_count;
   }
   double rest = 0.0;
   std::size_t tail_doubts = 0;
@@ -1095,8 +1408,8 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
                                     6.0 * lanes::abs(p.radius));
     const Mask usable = lanes::eq(tol - tol, Lanes{}) & lanes::ge(t_end, Lanes{});
     const Mask clear =
-        usable & misses<NarrowOps>(x0, vx, acc.a[0], acc.inv_2a[0], acc.curved[0], Lanes{}, t_end,
-                                   lo[0] - p.radius - tol, hi[0] + p.radius + tol);
+        usable & misses<NarrowOps>(x0, vx, acc.a[0], acc.minus_inv_2a[0], acc.curved[0], Lanes{},
+                                   t_end, lo[0] - p.radius - tol, hi[0] + p.radius + tol);
     const int bits = lanes::bits(clear);
     clears_[i] = static_cast<char>(bits & 1);
     doubt_[doubts] = static_cast<std::int32_t>(i);
@@ -1145,11 +1458,24 @@ void TwoBoxClearance::use_wide_lanes(bool wide) {
 #endif
 }
 
+// Only ever grown: nothing in them carries over from one run to the next, and a resize in each
+// run would write them whole on the first after reserve().
+void TwoBoxClearance::size_wide_work(std::size_t n) {
+  const auto at_least = [](auto& v, std::size_t size) {
+    if (v.size() < size) v.resize(size);
+  };
+  at_least(kept_, kept_doubles(n));
+  at_least(verdicts_, n / 4 + 1);
+  at_least(piece_rows_, kPieceRows * piece_stride(n));
+  at_least(piece_lanes_, piece_stride(n));
+}
+
 void TwoBoxClearance::reserve(std::size_t n) {
   reserve_touched(clears_, n);
   reserve_touched(grown_clears_, n);
   reserve_touched(doubt_, n + 4);
   reserve_touched(groups_, n / 4 + 1);
+  size_wide_work(n);
   reserve_touched(unsettled_, n);
 }
 
@@ -1160,6 +1486,7 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   grown_clears_.assign(n, 1);
   doubt_.resize(n + 4);
   groups_.resize(n / 4 + 1);
+  size_wide_work(n);
   unsettled_.resize(n);
   unsettled_count_ = 0;
   doubts_ = 0;
@@ -1197,8 +1524,14 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   if (wide_) {
     const FragmentState& f0 = fragments[0];
     const bool packed = f0.velocity_mps.data() == f0.position_m.data() + 3;
-    listed = both_tiers_wide(fragments.data(), n, p, packed, q, out, groups_.data(), doubt,
-                             &max_radius_m_, &doubts_);
+    void* kept = kept_.data();
+    std::size_t room = kept_doubles(n) * sizeof(double);
+    std::align(32, room - 3 * sizeof(double), kept, room);
+    listed =
+        both_tiers_wide(fragments.data(), n, p, packed, q, out, groups_.data(), verdicts_.data(),
+                        static_cast<double*>(kept),
+                        PieceLanes{piece_rows_.data(), piece_stride(n), piece_lanes_.data(), 0},
+                        &keep_rows_, doubt, &max_radius_m_, &doubts_);
   } else {
     listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
     doubts_ = listed;

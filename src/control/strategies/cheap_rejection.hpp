@@ -180,6 +180,9 @@ class TwoBoxClearance {
   std::size_t first_tier_doubts() const { return doubts_; }
 
  private:
+  // Room in the wide lanes' work arrays (kept_ to piece_lanes_) for n fragments.
+  void size_wide_work(std::size_t n);
+
   std::size_t size_ = 0;
   std::pmr::memory_resource* mem_;
   std::pmr::vector<char> clears_{mem_};
@@ -187,6 +190,19 @@ class TwoBoxClearance {
   [[maybe_unused]] bool wide_ = false;           // unused where there are no wide lanes
   std::pmr::vector<std::int32_t> doubt_{mem_};   // fragments the first tier left in doubt
   std::pmr::vector<std::int32_t> groups_{mem_};  // groups of four with one in doubt (wide lanes)
+  // For each of those groups, what the first tier found, kept for the second rather than gathered
+  // and tested again: four lanes of each of its numbers (positions relative to the frame,
+  // velocities, radii, intervals), and which lanes it cleared of which box (then the second
+  // tier's verdict).
+  std::pmr::vector<double> kept_{mem_};
+  std::pmr::vector<std::int32_t> verdicts_{mem_};
+  // Whether the next run's first loop keeps them: the last run left more than a few groups in
+  // doubt (at first yes, as an explosion's first step has all in doubt).
+  bool keep_rows_ = true;
+  // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
+  // row by row, and each one's group and lane.
+  std::pmr::vector<double> piece_rows_{mem_};
+  std::pmr::vector<std::int32_t> piece_lanes_{mem_};
   std::pmr::vector<std::int32_t> unsettled_{mem_};
   std::size_t unsettled_count_ = 0;
   std::size_t doubts_ = 0;
