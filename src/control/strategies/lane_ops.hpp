@@ -123,8 +123,13 @@ struct WideOps {
     return reinterpret_cast<V>((reinterpret_cast<WideMask>(mag) & magnitude) |
                                (reinterpret_cast<WideMask>(sign) & ~magnitude));
   }
+  // SSE2's movmskpd on each half, as for sqrt: lane by lane, GCC extracts and masks each one.
   [[gnu::always_inline]] static int bits(const M& m) {
-    return static_cast<int>((m.bits[0] & 1) | (m.bits[1] & 2) | (m.bits[2] & 4) | (m.bits[3] & 8));
+    using Half = std::int64_t __attribute__((vector_size(16)));
+    const Half lo{m.bits[0], m.bits[1]};
+    const Half hi{m.bits[2], m.bits[3]};
+    return _mm_movemask_pd(reinterpret_cast<__m128d>(lo)) |
+           _mm_movemask_pd(reinterpret_cast<__m128d>(hi)) << 2;
   }
 };
 #endif
