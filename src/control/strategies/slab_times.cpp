@@ -170,8 +170,8 @@ RootList lane_root_list(const LaneRootsOf<NarrowOps>& r, int k, const NarrowOps:
 
 // Two slabs' bounds' roots in four lanes: a's lower and upper bound, then b's. The upper halves
 // of the vector registers are cleared before returning to code compiled without AVX (GCC 12 did
-// not clear them here, and SSE code after dirty upper halves ran 2.5 times slower on this
-// project's machines).
+// not clear them here, and the SSE code after it ran 2.5 times slower on the benchmark machine,
+// docs/benchmarks.md's fourth round).
 [[gnu::target("avx2")]] void bound_roots_wide(const Slab& a, const Slab& b, double t0, double t1,
                                               RootList (&out)[4]) {
   using O = WideOps;

@@ -8,10 +8,10 @@
 // (first_root.hpp's list_real_roots), sorted; each piece between consecutive points is in the set
 // when its midpoint is inside; a path that starts inside has at least {t0}. slab_times computes
 // exactly that, bit for bit (tests/strategies/slab_times_test.cpp holds the definition written
-// plainly and compares), with the two bounds' roots found together in two lanes: the quadratics'
-// closed forms, their divisions and square root, once for both; list_real_roots itself only
-// where a bound needs its rarer branches (a sample that overflows, a root the closed form cannot
-// place).
+// plainly and compares), with the two bounds' roots found together in lanes (two, or four for two
+// slabs at once): the quadratics' closed forms, their divisions and square root, once for all;
+// list_real_roots itself only where a bound needs its rarer branches (a sample that overflows, a
+// root the closed form cannot place).
 
 #include "geometry/parabola.hpp"
 #include "strategies/intervals.hpp"
