@@ -198,7 +198,7 @@ class TwoBoxClearance {
   std::pmr::vector<std::int32_t> verdicts_{mem_};
   // Whether the next run's first loop keeps them: the last run left more than a few groups in
   // doubt (at first yes, as an explosion's first step has all in doubt).
-  bool keep_rows_ = true;
+  [[maybe_unused]] bool keep_rows_ = true;  // unused where there are no wide lanes
   // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
   // row by row, and each one's group and lane.
   std::pmr::vector<double> piece_rows_{mem_};
