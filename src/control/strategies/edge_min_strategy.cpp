@@ -122,8 +122,6 @@ struct Constraint {
   const Inflation* rho;  // with its knees (Inflation::with_knees)
 };
 
-// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab. Each
-// side has its own knee: between the knees both bounds are single quadratics.
 // Constraint con's grown slab on axis k over [t0, t1], a piece wholly on one side of each of its
 // sides' knees (the knees are its ends).
 inline Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double t0, double t1) {
