@@ -1,4 +1,4 @@
-// The controller library's per-step cost (project issue 12): one fragsim_controller_step through
+// The controller library's per-step cost: one fragsim_controller_step through
 // the C API, the way a game calls it, at 1,728, 15,625 and 100,000 fragments (front.ini's aimed
 // blast at splits 12, 25 and 47, the last cut to 100,000), in flight (0.3 s after the explosion,
 // moved on their ballistic paths) and with 90% of them resting on the ground (zero velocity,
@@ -30,10 +30,29 @@ constexpr double kInFlightAt_s = 0.3;
 
 struct Setup {
   fragsim_step_input input{};
+  fragsim_camera_def camera{};
+  fragsim_camera_pose camera_pose{};
   std::vector<fragsim_fragment> fragments;
   fragsim::CameraPose pose;
   Eigen::Vector3d camera_velocity_mps = Eigen::Vector3d::Zero();
 };
+
+// A controller with the setup's camera set.
+fragsim_status create(const fragsim_controller_def& def, const Setup& s,
+                      fragsim_controller_id& ctl) {
+  const fragsim_status st = fragsim_controller_create(&def, &ctl, nullptr, 0);
+  if (st != FRAGSIM_OK) return st;
+  return fragsim_controller_set_cameras(ctl, &s.camera, 1);
+}
+
+fragsim_status step(fragsim_controller_id ctl, const Setup& s, const fragsim_fragment* fragments,
+                    fragsim_vec3* forces, fragsim_step_stats* stats) {
+  fragsim_step_input in = s.input;  // the pose's address is the setup's, which may have moved
+  in.camera_poses = &s.camera_pose;
+  in.camera_count = 1;
+  return fragsim_controller_step(ctl, &in, fragments, static_cast<int32_t>(s.fragments.size()),
+                                 forces, stats);
+}
 
 fragsim_vec3 vec(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
@@ -74,20 +93,18 @@ Setup make_setup(int count, bool resting) {
   in.gravity_mps2 = vec(g);
   in.ground_height_m = scene.ground.height_m;
   in.ground_normal = {0.0, 1.0, 0.0};  // the tool's world is y-up
-  in.camera = fragsim_default_camera();
-  in.camera.eye_m = vec(s.pose.eye_m);
-  in.camera.right = vec(s.pose.right);
-  in.camera.up = vec(s.pose.up);
-  in.camera.forward = vec(s.pose.forward);
-  in.camera.velocity_mps = vec(s.camera_velocity_mps);
-  in.camera.fovy_deg = s.pose.fovy_deg;
-  in.camera.aspect = s.pose.aspect;
-  in.camera.near_m = s.pose.near_m;
-  in.camera.far_m = s.pose.far_m;
-  in.camera.body_half_m = vec(0.5 * scene.camera.body_size_m);
-  in.camera.max_speed_mps = scene.camera.max_speed_mps;
-  in.fragments = s.fragments.data();
-  in.fragment_count = static_cast<int32_t>(s.fragments.size());
+  s.camera = fragsim_default_camera_def();
+  s.camera.fovy_deg = s.pose.fovy_deg;
+  s.camera.aspect = s.pose.aspect;
+  s.camera.near_m = s.pose.near_m;
+  s.camera.far_m = s.pose.far_m;
+  s.camera.body_half_m = vec(0.5 * scene.camera.body_size_m);
+  s.camera.max_speed_mps = scene.camera.max_speed_mps;
+  s.camera_pose.eye_m = vec(s.pose.eye_m);
+  s.camera_pose.right = vec(s.pose.right);
+  s.camera_pose.up = vec(s.pose.up);
+  s.camera_pose.forward = vec(s.pose.forward);
+  s.camera_pose.velocity_mps = vec(s.camera_velocity_mps);
   return s;
 }
 // The tool's fragment states for the setup's fragments (the C API makes the same copy).
@@ -110,20 +127,20 @@ void BM_ControlStep(benchmark::State& state, fragsim_strategy strategy, bool res
   fragsim_controller_def def = fragsim_default_controller_def();
   def.strategy = strategy;
   fragsim_controller_id ctl{};
-  if (fragsim_controller_create(&def, &ctl, nullptr, 0) != FRAGSIM_OK) {
+  if (create(def, s, ctl) != FRAGSIM_OK) {
     state.SkipWithError("create failed");
     return;
   }
   std::vector<fragsim_vec3> forces(s.fragments.size());
   fragsim_step_stats stats{};
   // The first call sees every id for the first time (the id table fills): not the steady state.
-  if (fragsim_controller_step(ctl, &s.input, forces.data(), &stats) != FRAGSIM_OK) {
+  if (step(ctl, s, s.fragments.data(), forces.data(), &stats) != FRAGSIM_OK) {
     state.SkipWithError(fragsim_controller_last_error(ctl));
     fragsim_controller_destroy(ctl);
     return;
   }
   for (auto _ : state) {
-    fragsim_controller_step(ctl, &s.input, forces.data(), &stats);
+    step(ctl, s, s.fragments.data(), forces.data(), &stats);
     benchmark::DoNotOptimize(forces.data());
     benchmark::ClobberMemory();
   }
@@ -146,7 +163,7 @@ void BM_ControlStepAllNewIds(benchmark::State& state, bool resting) {
   Setup s = make_setup(static_cast<int>(state.range(0)), resting);
   const fragsim_controller_def def = fragsim_default_controller_def();
   fragsim_controller_id ctl{};
-  if (fragsim_controller_create(&def, &ctl, nullptr, 0) != FRAGSIM_OK) {
+  if (create(def, s, ctl) != FRAGSIM_OK) {
     state.SkipWithError("create failed");
     return;
   }
@@ -154,14 +171,11 @@ void BM_ControlStepAllNewIds(benchmark::State& state, bool resting) {
   const auto n = static_cast<std::uint64_t>(s.fragments.size());
   std::vector<fragsim_fragment> other = s.fragments;
   for (fragsim_fragment& f : other) f.id += n;
-  fragsim_step_input a = s.input;
-  fragsim_step_input b = s.input;
-  b.fragments = other.data();
-  fragsim_controller_step(ctl, &a, forces.data(), nullptr);
+  step(ctl, s, s.fragments.data(), forces.data(), nullptr);
   bool flip = false;
   fragsim_step_stats stats{};
   for (auto _ : state) {
-    fragsim_controller_step(ctl, flip ? &a : &b, forces.data(), &stats);
+    step(ctl, s, flip ? s.fragments.data() : other.data(), forces.data(), &stats);
     flip = !flip;
     benchmark::DoNotOptimize(forces.data());
     benchmark::ClobberMemory();
@@ -182,10 +196,10 @@ void BM_ControlFirstCall(benchmark::State& state, bool reserve) {
   for (auto _ : state) {
     state.PauseTiming();
     fragsim_controller_id ctl{};
-    fragsim_controller_create(&def, &ctl, nullptr, 0);
+    create(def, s, ctl);
     if (reserve) fragsim_controller_reserve(ctl, static_cast<int32_t>(s.fragments.size()));
     state.ResumeTiming();
-    fragsim_controller_step(ctl, &s.input, forces.data(), nullptr);
+    step(ctl, s, s.fragments.data(), forces.data(), nullptr);
     benchmark::DoNotOptimize(forces.data());
     state.PauseTiming();
     fragsim_controller_destroy(ctl);
@@ -204,11 +218,10 @@ void BM_ControlEdgeMinDirect(benchmark::State& state, bool resting) {
   ctx.end_time_s = s.input.end_time_s;
   ctx.camera = s.pose;
   ctx.camera_velocity_mps = s.camera_velocity_mps;
-  ctx.camera_max_speed_mps = s.input.camera.max_speed_mps;
+  ctx.camera_max_speed_mps = s.camera.max_speed_mps;
   ctx.camera_max_accel_mps2 = INFINITY;
-  ctx.camera_max_turn_radps = INFINITY;
-  ctx.camera_body_half_m = {s.input.camera.body_half_m.x, s.input.camera.body_half_m.y,
-                            s.input.camera.body_half_m.z};
+  ctx.camera_max_turn_degps = INFINITY;
+  ctx.camera_body_half_m = {s.camera.body_half_m.x, s.camera.body_half_m.y, s.camera.body_half_m.z};
   ctx.gravity_mps2 = {s.input.gravity_mps2.x, s.input.gravity_mps2.y, s.input.gravity_mps2.z};
   ctx.ground_height_m = s.input.ground_height_m;
   ctx.fragments = states;

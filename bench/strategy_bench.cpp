@@ -17,6 +17,7 @@
 #include "strategies/collision_prediction.hpp"
 #include "strategies/edge_min_strategy.hpp"
 #include "strategies/edge_strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace {
 
@@ -133,7 +134,8 @@ template <class S>
 void BM_StrategyStep(benchmark::State& state, S strategy) {
   const int splits = static_cast<int>(state.range(0));
   const int at = static_cast<int>(state.range(1));
-  fragsim::Run run(scene_of(SceneKind::kAimed, splits), strategy);
+  fragsim::LibraryStrategyRef ref(strategy);
+  fragsim::Run run(scene_of(SceneKind::kAimed, splits), ref);
   while (run.state().step < at) run.step();
   const S saved = strategy;
   std::vector<FragmentState> states(run.state().fragments.begin(), run.state().fragments.end());
@@ -196,7 +198,8 @@ void BM_StrategyRun(benchmark::State& state, S strategy) {
   std::vector<fragsim::StepContext> contexts;
   std::vector<std::vector<FragmentState>> states;
   const double run_start_ms = thread_cpu_ms();
-  fragsim::Run run(scene, strategy);
+  fragsim::LibraryStrategyRef ref(strategy);
+  fragsim::Run run(scene, ref);
   while (!run.done()) {
     contexts.push_back(run.next_context());
     states.emplace_back(run.state().fragments.begin(), run.state().fragments.end());

@@ -4,7 +4,8 @@
 // same fragment states with a plain conservative test, in the same process: a loaded machine
 // slows both, so their ratio is what to read.
 //
-//   worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...] [--shadow section.key=value ...]
+//   worst_frame SCENE STRATEGY [REPEATS] [--workers N] [section.key=value ...]
+//               [--shadow section.key=value ...]
 //
 // Phases by step (the default scene at dt 1/60 s): t = 0 is step 0, early flight steps 1-29, the
 // lens pass steps 30-59 (the debris passing the camera), landed the last 60 steps. Per phase:
@@ -26,6 +27,14 @@
 //
 // The strategy steps into its own reserved output, copied to the run's outside the timing, so the
 // run's own buffers growing is not counted as the strategy's.
+//
+// --workers N: the strategy (and its shadow) is given a ParallelFor of N workers, the calling
+// thread and N - 1 threads of a pool started before the runs, as a game's task system would
+// (StepContext::parallel), and told so once (Strategy::set_worker_count). Its steps are then
+// timed by the wall clock, as the calling thread's CPU time would miss the workers' (compare N = 1
+// with N = 2, both on the wall clock, not with a run without the option); the figures add the
+// flight's and the lens pass's mean and p95 per step in microseconds. The floor stays on the
+// calling thread's CPU time.
 
 #include <sys/resource.h>
 #include <time.h>
@@ -33,13 +42,16 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "geometry/work_space.hpp"
@@ -47,6 +59,8 @@
 #include "sim/run.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
+#include "strategies/parallel_for.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace {
 
@@ -94,6 +108,113 @@ double thread_cpu_ns() {
   return 1e9 * static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec);
 }
 
+double wall_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return 1e9 * static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec);
+}
+
+// A game's task system in miniature: workers - 1 threads started once, asleep between runs, and
+// the calling thread as worker 0. Each run cuts its items into about four ranges per worker (at
+// least min_range items each) that the workers take in turn; run() returns when all are done.
+// Nothing in a run allocates.
+class ThreadPoolFor final : public fragsim::ParallelFor {
+ public:
+  explicit ThreadPoolFor(int workers) : workers_(std::max(workers, 1)) {
+    for (int w = 1; w < workers_; ++w) {
+      threads_.emplace_back([this, w] { serve(static_cast<std::uint32_t>(w)); });
+    }
+  }
+  ~ThreadPoolFor() override {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+  }
+  ThreadPoolFor(const ThreadPoolFor&) = delete;
+  ThreadPoolFor& operator=(const ThreadPoolFor&) = delete;
+
+  int worker_count() const override { return workers_; }
+  void run(std::int32_t item_count, std::int32_t min_range, RangeFn fn,
+           void* context) const override {
+    if (item_count <= 0) return;
+    const std::int32_t wanted = std::max<std::int32_t>(1, 4 * workers_);
+    const std::int32_t length =
+        std::max({std::int32_t{1}, min_range, (item_count + wanted - 1) / wanted});
+    const std::int32_t ranges = (item_count + length - 1) / length;
+    if (ranges == 1 || workers_ == 1) {
+      fn(0, item_count, 0, context);
+      return;
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      job_ = Job{fn, context, item_count, length, ranges};
+      next_.store(0);
+      done_ = 0;
+      ++generation_;
+    }
+    wake_.notify_all();
+    const std::int32_t mine = take_ranges(0, job_);
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_ += mine;
+    // Every range done, and no worker still inside the job, before the next one may be set.
+    finished_.wait(lock, [&] { return done_ == job_.ranges && active_ == 0; });
+  }
+
+ private:
+  struct Job {
+    RangeFn fn = nullptr;
+    void* context = nullptr;
+    std::int32_t items = 0;
+    std::int32_t length = 0;
+    std::int32_t ranges = 0;
+  };
+
+  // Runs ranges of `job` until none is left; returns how many it ran.
+  std::int32_t take_ranges(std::uint32_t worker, const Job& job) const {
+    std::int32_t ran = 0;
+    for (std::int32_t r = next_.fetch_add(1); r < job.ranges; r = next_.fetch_add(1)) {
+      const std::int32_t begin = r * job.length;
+      job.fn(begin, std::min(job.items, begin + job.length), worker, job.context);
+      ++ran;
+    }
+    return ran;
+  }
+
+  void serve(std::uint32_t worker) const {
+    long seen = 0;
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+      if (done_ == job_.ranges) continue;  // woken after the job was done: nothing to join
+      const Job job = job_;
+      ++active_;
+      lock.unlock();
+      const std::int32_t ran = take_ranges(worker, job);
+      lock.lock();
+      done_ += ran;
+      --active_;
+      if (done_ == job.ranges && active_ == 0) finished_.notify_one();
+    }
+  }
+
+  int workers_;
+  std::vector<std::thread> threads_;
+  mutable std::mutex mutex_;
+  mutable std::condition_variable wake_;
+  mutable std::condition_variable finished_;
+  mutable Job job_;
+  mutable std::atomic<std::int32_t> next_{0};
+  mutable std::int32_t done_ = 0;    // ranges of the job done
+  mutable std::int32_t active_ = 0;  // workers inside the job
+  mutable long generation_ = 0;
+  bool stopping_ = false;
+};
+
 long minor_faults() {
   rusage usage{};
   getrusage(RUSAGE_THREAD, &usage);
@@ -131,10 +252,18 @@ int floor_pass(const fragsim::StepContext& ctx, double reach_m, double horizon_s
 
 // Times the strategy it wraps, step by step, and runs the floor pass after it; times the shadow,
 // if any, on the same states.
-class TimedStrategy final : public fragsim::Strategy {
+class TimedStrategy final : public fragsim::SceneStrategy {
  public:
-  TimedStrategy(std::unique_ptr<fragsim::Strategy> inner, std::unique_ptr<fragsim::Strategy> shadow)
-      : inner_(std::move(inner)), shadow_(std::move(shadow)) {}
+  // With `parallel`, its steps (and the shadow's) get it and are timed by the wall clock.
+  TimedStrategy(std::unique_ptr<fragsim::SceneStrategy> inner,
+                std::unique_ptr<fragsim::SceneStrategy> shadow,
+                const fragsim::ParallelFor* parallel)
+      : inner_(std::move(inner)), shadow_(std::move(shadow)), parallel_(parallel) {
+    if (parallel_ != nullptr) {
+      tell_workers(*inner_);
+      if (shadow_) tell_workers(*shadow_);
+    }
+  }
   std::string name() const override { return inner_->name(); }
   fragsim::WorldNeeds needs() const override { return inner_->needs(); }
   fragsim::Predictor path_predictor() const override { return inner_->path_predictor(); }
@@ -143,7 +272,7 @@ class TimedStrategy final : public fragsim::Strategy {
     // Room for one answer per fragment, its pages touched, as a game keeps its output buffer: the
     // strategy's faults are then its own.
     const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
-    for (fragsim::StepOutput* o : {&own_, &shadow_out_}) {
+    for (fragsim::SceneStepOutput* o : {&own_, &shadow_out_}) {
       fragsim::reserve_touched(o->forces, n);
       fragsim::reserve_touched(o->activity.candidates, n);
       fragsim::reserve_touched(o->activity.capped, n);
@@ -152,11 +281,9 @@ class TimedStrategy final : public fragsim::Strategy {
     times.clear();
     times.reserve(4096);
   }
-  void reserve(int fragment_count) override {
-    inner_->reserve(fragment_count);
-    if (shadow_) shadow_->reserve(fragment_count);
-  }
-  void step(const fragsim::StepContext& ctx, fragsim::StepOutput& out) override {
+  void step(const fragsim::StepContext& run_ctx, fragsim::SceneStepOutput& out) override {
+    fragsim::StepContext ctx = run_ctx;
+    ctx.parallel = parallel_;
     own_.clear();
     StepTimes t;
     const bool shadow_first = times.size() % 2 == 1;
@@ -164,9 +291,9 @@ class TimedStrategy final : public fragsim::Strategy {
     const long faults_before = minor_faults();
     allocations.store(0);
     counting.store(true);
-    const double start = thread_cpu_ns();
+    const double start = now_ns();
     inner_->step(ctx, own_);
-    const double stop = thread_cpu_ns();
+    const double stop = now_ns();
     counting.store(false);
     t.faults = minor_faults() - faults_before;
     t.allocations = allocations.load();
@@ -197,15 +324,24 @@ class TimedStrategy final : public fragsim::Strategy {
   double shadow_step(const fragsim::StepContext& ctx) {
     if (!shadow_) return 0.0;
     shadow_out_.clear();
-    const double start = thread_cpu_ns();
+    const double start = now_ns();
     shadow_->step(ctx, shadow_out_);
-    return thread_cpu_ns() - start;
+    return now_ns() - start;
+  }
+  // The strategy's clock: the calling thread's CPU time, or the wall clock when it has workers.
+  double now_ns() const { return parallel_ != nullptr ? wall_ns() : thread_cpu_ns(); }
+  // Only the library's strategies take workers; the tool's baselines run as they are.
+  void tell_workers(fragsim::SceneStrategy& s) const {
+    if (auto* library = dynamic_cast<fragsim::LibraryStrategy*>(&s)) {
+      library->inner().set_worker_count(parallel_->worker_count());
+    }
   }
 
-  std::unique_ptr<fragsim::Strategy> inner_;
-  std::unique_ptr<fragsim::Strategy> shadow_;
-  fragsim::StepOutput own_;
-  fragsim::StepOutput shadow_out_;
+  std::unique_ptr<fragsim::SceneStrategy> inner_;
+  std::unique_ptr<fragsim::SceneStrategy> shadow_;
+  const fragsim::ParallelFor* parallel_;
+  fragsim::SceneStepOutput own_;
+  fragsim::SceneStepOutput shadow_out_;
   long sink_ = 0;
 };
 
@@ -254,12 +390,15 @@ const std::vector<std::string> kShadowNames = {
     "shadow_flight_mean_ns",      "shadow_flight_p95_ns",         "shadow_lens_mean_ns",
     "shadow_lens_p95_ns",         "beyond_shadow_flight_mean_ns", "beyond_shadow_flight_p95_ns",
     "beyond_shadow_lens_mean_ns", "beyond_shadow_lens_p95_ns"};
+// With --workers: the strategy's wall time per step (not per fragment), in microseconds.
+const std::vector<std::string> kWorkerNames = {"flight_mean_step_us", "flight_p95_step_us",
+                                               "lens_mean_step_us", "lens_p95_step_us"};
 
 int run(int argc, char** argv) {
   if (argc < 3) {
     std::fprintf(stderr,
-                 "usage: worst_frame SCENE STRATEGY [REPEATS] [section.key=value ...] "
-                 "[--shadow section.key=value ...]\n");
+                 "usage: worst_frame SCENE STRATEGY [REPEATS] [--workers N] "
+                 "[section.key=value ...] [--shadow section.key=value ...]\n");
     return 2;
   }
   const std::string scene_path = argv[1];
@@ -275,8 +414,15 @@ int run(int argc, char** argv) {
   std::vector<fragsim::SceneOverride> overrides;
   std::vector<fragsim::SceneOverride> shadow_overrides;
   bool in_shadow = false;
+  int workers = 0;  // 0: no ParallelFor, the calling thread's CPU time
   for (int i = first_override; i < argc; ++i) {
     const std::string kv = argv[i];
+    if (kv == "--workers") {
+      if (i + 1 >= argc) throw std::invalid_argument("--workers needs a number");
+      workers = std::stoi(argv[++i]);
+      if (workers < 1) throw std::invalid_argument("--workers must be at least 1");
+      continue;
+    }
     if (kv == "--shadow") {
       in_shadow = true;
       continue;
@@ -296,6 +442,9 @@ int run(int argc, char** argv) {
   const fragsim::Scene shadow_scene = shadowed ? fragsim::load_scene(scene_path, both) : scene;
   if (shadowed) fragsim::validate_strategy_settings(strategy, shadow_scene);
 
+  // Started once, before the runs, as a game's task system is.
+  const std::unique_ptr<ThreadPoolFor> pool =
+      workers > 0 ? std::make_unique<ThreadPoolFor>(workers) : nullptr;
   std::vector<Figures> all;
   int fragments = 0;
   int steps = 0;
@@ -303,7 +452,8 @@ int run(int argc, char** argv) {
   std::vector<double> last_physics;
   for (int r = 0; r < repeats; ++r) {
     TimedStrategy timed(fragsim::make_strategy(strategy, scene),
-                        shadowed ? fragsim::make_strategy(strategy, shadow_scene) : nullptr);
+                        shadowed ? fragsim::make_strategy(strategy, shadow_scene) : nullptr,
+                        pool.get());
     fragsim::Run run(scene, timed);
     fragments = static_cast<int>(run.state().fragments.size());
     std::vector<double> physics_ns;
@@ -382,6 +532,14 @@ int run(int argc, char** argv) {
                                          quantile(v_lens, 0.95)});
       }
     }
+    if (pool) {
+      std::vector<double> step_us;
+      for (const StepTimes& t : timed.times) step_us.push_back(t.strategy_ns / 1e3);
+      const std::vector<double> flight_us = slice(step_us, 1, 60);
+      const std::vector<double> lens_us = slice(step_us, 30, 60);
+      f.values.insert(f.values.end(), {mean(flight_us), quantile(flight_us, 0.95), mean(lens_us),
+                                       quantile(lens_us, 0.95)});
+    }
     all.push_back(f);
     last = timed.times;
     last_physics = physics_ns;
@@ -389,8 +547,12 @@ int run(int argc, char** argv) {
   }
   std::printf("# worst_frame %s %s: %d fragments, %d steps, median of %d runs; ns per fragment\n",
               scene_path.c_str(), strategy.c_str(), fragments, steps, repeats);
+  if (pool) {
+    std::printf("# %d workers: the strategy's times are wall-clock times\n", workers);
+  }
   std::vector<std::string> names = kNames;
   if (shadowed) names.insert(names.end(), kShadowNames.begin(), kShadowNames.end());
+  if (pool) names.insert(names.end(), kWorkerNames.begin(), kWorkerNames.end());
   for (std::size_t k = 0; k < names.size(); ++k) {
     std::vector<double> v;
     for (const Figures& f : all) v.push_back(f.values[k]);

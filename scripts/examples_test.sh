@@ -12,7 +12,8 @@ trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
 
 cmake --install "$build" --prefix "$prefix" --component control >/dev/null
-for f in include/fragsim/control.h lib/libfragsim_control.so lib/libfragsim_control.a \
+for f in include/fragsim/control.h include/fragsim/types.h lib/libfragsim_control.so.1 \
+         lib/libfragsim_control.so lib/libfragsim_control.a \
          lib/cmake/fragsim_control/fragsim_control-config.cmake lib/pkgconfig/fragsim-control.pc; do
   [[ -e $prefix/$f ]] || { echo "examples_test: $f not installed" >&2; exit 1; }
 done

@@ -43,7 +43,7 @@ struct Substeps {
   fragsim_step_input input = fragsim_default_step_input();
   fragsim_camera_def camera_def = fragsim_default_camera_def();     // set once on the controller
   fragsim_camera_pose camera_pose = fragsim_default_camera_pose();  // what each substep passes
-  fragsim_fragment_arrays arrays{};
+  fragsim_fragment_arrays arrays = fragsim_default_fragment_arrays();
   std::vector<FragmentRecord> fragments;
   std::vector<Vec3> centre_before_m;  // for the near-plane check
   std::vector<char> hit, pushed;
@@ -150,13 +150,13 @@ void set_fixed_input(fragsim_step_input& in, fragsim_camera_def& camera, const b
   camera.far_m = 500;
   camera.max_speed_mps = CameraBounds::max_speed_mps;
   camera.max_accel_mps2 = CameraBounds::max_accel_mps2;
-  camera.max_turn_radps = CameraBounds::max_turn_radps;
+  camera.max_turn_degps = CameraBounds::max_turn_degps;  // degrees, as every angle of the API
 }
 
 fragsim_fragment_arrays strided_arrays(std::vector<FragmentRecord>& fragments) {
   constexpr size_t stride = sizeof(FragmentRecord);
   FragmentRecord& f = fragments.front();
-  fragsim_fragment_arrays arrays{};
+  fragsim_fragment_arrays arrays = fragsim_default_fragment_arrays();
   arrays.scalar_type = FRAGSIM_SCALAR_FLOAT;
   arrays.position_m = f.position_m, arrays.position_stride_bytes = stride;
   arrays.velocity_mps = f.velocity_mps, arrays.velocity_stride_bytes = stride;

@@ -2,6 +2,8 @@
 // any substep's start (not only at rendered frames), and that keeps the bounds it declares.
 #pragma once
 
+#include <numbers>
+
 #include "seeded_draws.hpp"
 #include "vec3.hpp"
 
@@ -9,11 +11,13 @@ enum class CameraMove { walk_in, strafe, back_off, pan };
 
 const char* camera_move_name(CameraMove move);
 
-// What the game declares to the controller, and what every path below keeps.
+// What the game declares to the controller, and what every path below keeps. The paths turn in
+// radians; the controller takes every angle in degrees.
 struct CameraBounds {
   static constexpr double max_speed_mps = 3.0;
   static constexpr double max_accel_mps2 = 6.0;
   static constexpr double max_turn_radps = 1.0;
+  static constexpr double max_turn_degps = max_turn_radps * 180.0 / std::numbers::pi;
 };
 
 struct CameraPose {

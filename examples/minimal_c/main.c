@@ -11,7 +11,11 @@ int main(void) {
   char message[256];
   fragsim_fragment fragments[4];
   fragsim_vec3 forces[4];
-  /* Start from the defaults (no end, dt 1/60 s, gravity -9.81 m/s^2 in y): never from "= {0}". */
+  /* Start every struct from its defaults function, never from "= {0}". The camera: fragsim's
+   * default frustum and body; its pose at the origin, looking down -z, still. */
+  fragsim_camera_def camera = fragsim_default_camera_def();
+  fragsim_camera_pose pose = fragsim_default_camera_pose();
+  /* No end, dt 1/60 s, gravity -9.81 m/s^2 in y. */
   fragsim_step_input in = fragsim_default_step_input();
   fragsim_step_stats stats;
   fragsim_status status;
@@ -21,26 +25,31 @@ int main(void) {
     fprintf(stderr, "create: %s\n", message);
     return 1;
   }
+  /* The camera's constants, once: a controller has no camera until they are set. */
+  if (fragsim_controller_set_cameras(ctl, &camera, 1) != FRAGSIM_OK) {
+    fprintf(stderr, "set_cameras: %s\n", fragsim_controller_last_error(ctl));
+    fragsim_controller_destroy(ctl);
+    return 1;
+  }
   for (i = 0; i < 4; ++i) {
+    fragments[i] = fragsim_default_fragment();
     /* 6 m in front of the eye (the camera looks down -z), coming at 12 m/s; the first two
      * straight at the lens, the others 1.5 m to the side. */
     fragments[i].position_m.x = i < 2 ? 0.02 * i : 1.5;
     fragments[i].position_m.y = 1.6 + (i == 1 ? -0.03 : 0.0);
     fragments[i].position_m.z = -6.0 - 0.5 * i;
-    fragments[i].velocity_mps.x = 0.0;
     fragments[i].velocity_mps.y = 2.45; /* up, and back down to the lens as they arrive */
     fragments[i].velocity_mps.z = 12.0;
     fragments[i].radius_m = 0.05;
     fragments[i].mass_kg = 0.5;
     fragments[i].id = 100 + (uint64_t)i;
-    fragments[i].touched = 0;
   }
   in.ground_height_m = 0.0;
-  in.camera.eye_m.y = 1.6;
-  in.fragments = fragments;
-  in.fragment_count = 4;
+  pose.eye_m.y = 1.6;
+  in.camera_poses = &pose;
+  in.camera_count = 1;
 
-  status = fragsim_controller_step(ctl, &in, forces, &stats);
+  status = fragsim_controller_step(ctl, &in, fragments, 4, forces, &stats);
   if (status != FRAGSIM_OK) {
     fprintf(stderr, "step: %s: %s\n", fragsim_status_string(status),
             fragsim_controller_last_error(ctl));

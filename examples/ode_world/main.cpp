@@ -62,7 +62,7 @@ void build(Scene& s) {
     dGeomSetBody(dCreateBox(s.space, kBoxSize, kBoxSize, kBoxSize), b);
     s.bodies.push_back(b);
   }
-  s.fragments.assign(kBoxes, fragsim_fragment{});
+  s.fragments.assign(kBoxes, fragsim_default_fragment());
   s.forces.assign(kBoxes, fragsim_vec3{0, 0, 0});
 }
 
@@ -76,12 +76,16 @@ void destroy(Scene& s) {
 int run(fragsim_controller_id ctl) {
   Scene s;
   build(s);
-  fragsim_step_input in = fragsim_default_step_input();  // no end, default camera (looks down -z)
+  // The camera's pose each step (its constants were set once on the controller, in main).
+  fragsim_camera_pose camera = fragsim_default_camera_pose();  // looks down -z
+  camera.eye_m = {0, 1.6, 0};
+  camera.velocity_mps = {0, 0, -1.5};                    // walking toward the blast
+  fragsim_step_input in = fragsim_default_step_input();  // no end
   in.dt_s = kDt;
   in.gravity_mps2 = {0, -9.81, 0};
   in.ground_height_m = 0.0;
-  in.camera.eye_m = {0, 1.6, 0};
-  in.camera.velocity_mps = {0, 0, -1.5};  // walking toward the blast
+  in.camera_poses = &camera;
+  in.camera_count = 1;
   std::vector<char> hit(kBoxes, 0);
   for (int step = 0; step < 90; ++step) {
     in.time_s = step * kDt;
@@ -98,11 +102,10 @@ int run(fragsim_controller_id ctl) {
       f.mass_kg = m.mass;
       f.id = static_cast<uint64_t>(i);
     }
-    in.fragments = s.fragments.data();
-    in.fragment_count = kBoxes;
     // 2. One controller call, 3. its forces into the bodies, for this step only.
     if (!fragsim_controller_id_is_null(ctl)) {
-      if (fragsim_controller_step(ctl, &in, s.forces.data(), nullptr) != FRAGSIM_OK) {
+      if (fragsim_controller_step(ctl, &in, s.fragments.data(), kBoxes, s.forces.data(), nullptr) !=
+          FRAGSIM_OK) {
         std::fprintf(stderr, "fragsim: %s\n", fragsim_controller_last_error(ctl));
         destroy(s);
         return -1;
@@ -116,13 +119,13 @@ int run(fragsim_controller_id ctl) {
     dSpaceCollide(s.space, &s, near_callback);
     dWorldQuickStep(s.world, kDt);
     dJointGroupEmpty(s.contacts);
-    in.camera.eye_m.z += in.camera.velocity_mps.z * kDt;
+    camera.eye_m.z += camera.velocity_mps.z * kDt;
     // What the camera suffered: a box within 0.1 m of the protected box around the eye.
     for (int i = 0; i < kBoxes; ++i) {
       const dReal* p = dBodyGetPosition(s.bodies[i]);
-      const double dx = std::abs(p[0] - in.camera.eye_m.x);
-      const double dy = std::abs(p[1] - in.camera.eye_m.y);
-      const double dz = p[2] - in.camera.eye_m.z;  // the camera looks down -z
+      const double dx = std::abs(p[0] - camera.eye_m.x);
+      const double dy = std::abs(p[1] - camera.eye_m.y);
+      const double dz = p[2] - camera.eye_m.z;  // the camera looks down -z
       if (dx < 0.2 && dy < 0.15 && dz > -0.2 && dz < 0.15) hit[i] = 1;
     }
   }
@@ -141,6 +144,13 @@ int main() {
   char message[256];
   if (fragsim_controller_create(&def, &ctl, message, sizeof message) != FRAGSIM_OK) {
     std::fprintf(stderr, "fragsim: %s\n", message);
+    return 1;
+  }
+  // The camera's constants, once: fragsim's default frustum and body, 3 m/s at most.
+  const fragsim_camera_def camera = fragsim_default_camera_def();
+  if (fragsim_controller_set_cameras(ctl, &camera, 1) != FRAGSIM_OK) {
+    std::fprintf(stderr, "fragsim: %s\n", fragsim_controller_last_error(ctl));
+    fragsim_controller_destroy(ctl);
     return 1;
   }
   const int without = run(fragsim_controller_id{});

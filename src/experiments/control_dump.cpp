@@ -64,7 +64,7 @@ void ControlDump::record(const StepContext& ctx, const StepOutput& out) {
   put3(ctx.camera_velocity_mps);
   put(ctx.camera_max_speed_mps);
   put(ctx.camera_max_accel_mps2);
-  put(ctx.camera_max_turn_radps);
+  put(ctx.camera_max_turn_degps);
   put3(ctx.camera_body_half_m);
   put3(ctx.gravity_mps2);
   put(ctx.ground_height_m);

@@ -13,7 +13,7 @@
 //   step    int32 step; int32 fragment_count; int32 force_count; int32 reserved = 0;
 //           double context[32] = t, dt, end_time (+inf in the tool), eye[3], right[3], up[3],
 //           forward[3], fovy_deg,
-//             aspect, near, far, camera_velocity[3], V_c, max_accel, max_turn_radps,
+//             aspect, near, far, camera_velocity[3], V_c, max_accel, max_turn_degps,
 //             body_half[3], gravity[3], ground_height;
 //           fragment_count x double[8] = position[3], velocity[3], radius, mass;
 //           fragment_count x uint8 touched, then zero bytes up to a multiple of 8;
@@ -26,7 +26,7 @@
 
 #include "io/atomic_file.hpp"
 #include "sim/scene.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace fragsim {
 
@@ -53,19 +53,19 @@ class ControlDump {
 };
 
 // Runs `inner` and records what it was given and what it answered.
-class RecordingStrategy final : public Strategy {
+class RecordingStrategy final : public SceneStrategy {
  public:
-  RecordingStrategy(Strategy& inner, ControlDump& dump) : inner_(inner), dump_(dump) {}
+  RecordingStrategy(SceneStrategy& inner, ControlDump& dump) : inner_(inner), dump_(dump) {}
   std::string name() const override { return inner_.name(); }
   WorldNeeds needs() const override { return inner_.needs(); }
   void reset(int fragment_count) override { inner_.reset(fragment_count); }
-  void step(const StepContext& ctx, StepOutput& out) override {
+  void step(const StepContext& ctx, SceneStepOutput& out) override {
     inner_.step(ctx, out);
     dump_.record(ctx, out);
   }
 
  private:
-  Strategy& inner_;
+  SceneStrategy& inner_;
   ControlDump& dump_;
 };
 

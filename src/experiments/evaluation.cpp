@@ -43,7 +43,7 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy_name,
   std::optional<RecordingStrategy> recording;
   if (options.control_dump) recording.emplace(*strategy, *options.control_dump);
   const RunTotals totals =
-      simulate(scene, recording ? static_cast<Strategy&>(*recording) : *strategy, observers);
+      simulate(scene, recording ? static_cast<SceneStrategy&>(*recording) : *strategy, observers);
 
   Evaluation e;
   RunSummary& s = e.summary;

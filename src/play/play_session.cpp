@@ -280,7 +280,7 @@ void PlaySession::run() {
   const double dt = flight_scene_.sim.dt_s;
   for (;;) {
     const std::string name = strategies_[current_];
-    const std::unique_ptr<Strategy> strategy = make_strategy(name, flight_scene_);
+    const std::unique_ptr<SceneStrategy> strategy = make_strategy(name, flight_scene_);
     // The camera goes on from where the last flight left it. The run, as it is built, asks for
     // the velocity over its first step: the sample at dt, under what is held now.
     SteeredCamera camera(flight_scene_.camera, dt, controls_.sample(0.0));

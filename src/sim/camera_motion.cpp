@@ -13,7 +13,7 @@ CameraLimits declared_limits(const CameraDef& camera) {
   CameraLimits limits{camera.max_speed_mps, kUndeclaredBound, kUndeclaredBound};
   if (camera.mode == CameraMode::kPlayer) {
     limits.max_accel_mps2 = camera.player_accel_mps2;
-    limits.max_turn_radps = camera.turn_rate_degps * kPi / 180.0;
+    limits.max_turn_degps = camera.turn_rate_degps;
   }
   return limits;
 }

@@ -25,11 +25,11 @@ class CameraMotion {
 // The camera's limits as the scene declares them, for the strategies (StepContext's rule). V_c
 // always; acceleration and turn rate only for a player (its acceleration may be +infinity: instant
 // turns); kUndeclaredBound for a path or a track, which may start, stop and turn at once. They
-// reach a strategy as StepContext's camera_max_* (a game's as fragsim_camera's max_*).
+// reach a strategy as StepContext's camera_max_* (a game's as fragsim_camera_def's max_*).
 struct CameraLimits {
   double max_speed_mps = 0.0;
   double max_accel_mps2 = kUndeclaredBound;
-  double max_turn_radps = kUndeclaredBound;
+  double max_turn_degps = kUndeclaredBound;
 };
 CameraLimits declared_limits(const CameraDef& camera);
 

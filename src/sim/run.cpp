@@ -53,14 +53,14 @@ void arm_test_signal_from_environment() {
   g_test_signal = {signo, at, 0, self ? 0 : ::getpid()};
 }
 
-Run::Run(const Scene& scene, Strategy& strategy, std::span<RunObserver* const> observers)
+Run::Run(const Scene& scene, SceneStrategy& strategy, std::span<RunObserver* const> observers)
     : Run(scene, strategy, make_camera_motion(scene), nullptr, observers) {}
 
-Run::Run(const Scene& scene, Strategy& strategy, const CameraMotion& camera,
+Run::Run(const Scene& scene, SceneStrategy& strategy, const CameraMotion& camera,
          std::span<RunObserver* const> observers)
     : Run(scene, strategy, nullptr, &camera, observers) {}
 
-Run::Run(const Scene& scene, Strategy& strategy, std::unique_ptr<CameraMotion> own_camera,
+Run::Run(const Scene& scene, SceneStrategy& strategy, std::unique_ptr<CameraMotion> own_camera,
          const CameraMotion* camera, std::span<RunObserver* const> observers)
     : scene_(scene),
       strategy_(strategy),
@@ -106,7 +106,7 @@ StepContext Run::next_context() const {
   ctx.camera_velocity_mps = camera_.velocity_at(t);
   ctx.camera_max_speed_mps = limits_.max_speed_mps;
   ctx.camera_max_accel_mps2 = limits_.max_accel_mps2;
-  ctx.camera_max_turn_radps = limits_.max_turn_radps;
+  ctx.camera_max_turn_degps = limits_.max_turn_degps;
   ctx.camera_body_half_m = body_half_m_;
   ctx.gravity_mps2 = scene_.sim.gravity_mps2;
   ctx.ground_height_m =

@@ -14,7 +14,7 @@
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 #include "sim/world.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace fragsim {
 
@@ -32,12 +32,12 @@ class Run {
   // Explodes the scene, builds its world, resets the strategy and shows the observers the state
   // at t = 0 (their begin()). The scene, the strategy, the camera and the observers (with the
   // array `observers` views) must outlive the run. The camera's motion is made from camera.mode.
-  Run(const Scene& scene, Strategy& strategy, std::span<RunObserver* const> observers = {});
+  Run(const Scene& scene, SceneStrategy& strategy, std::span<RunObserver* const> observers = {});
   // The same with the camera's motion given by the caller (a camera steered live, src/play).
   // Step k asks for its pose and velocity at k dt, then, as it ends, at (k + 1) dt; nothing later.
   // A track's velocity over [t, t + dt) needs the sample after it: before step k a steered
   // camera must have samples up to (k + 2) dt, before the run is built up to dt.
-  Run(const Scene& scene, Strategy& strategy, const CameraMotion& camera,
+  Run(const Scene& scene, SceneStrategy& strategy, const CameraMotion& camera,
       std::span<RunObserver* const> observers = {});
   ~Run();
   // The snapshot points into the run's own buffers.
@@ -68,11 +68,11 @@ class Run {
  private:
   using Clock = std::chrono::steady_clock;
 
-  Run(const Scene& scene, Strategy& strategy, std::unique_ptr<CameraMotion> own_camera,
+  Run(const Scene& scene, SceneStrategy& strategy, std::unique_ptr<CameraMotion> own_camera,
       const CameraMotion* camera, std::span<RunObserver* const> observers);
 
   const Scene& scene_;
-  Strategy& strategy_;
+  SceneStrategy& strategy_;
   std::unique_ptr<CameraMotion> own_camera_;  // when made from camera.mode
   const CameraMotion& camera_;
   std::span<RunObserver* const> observers_;
@@ -84,7 +84,7 @@ class Run {
   std::vector<FragmentState> states_;
   std::vector<Eigen::Vector3d> last_finite_;
   std::vector<char> frozen_;
-  StepOutput out_;
+  SceneStepOutput out_;
   StepSnapshot snap_;
   const int step_count_;
   RunTotals totals_;

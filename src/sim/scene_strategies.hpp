@@ -18,7 +18,7 @@ inline void validate_strategy_settings(std::string_view name, const Scene& scene
 
 // The named strategy with its parameters taken from the scene's section of the same name.
 // Throws InputError.
-inline std::unique_ptr<Strategy> make_strategy(std::string_view name, const Scene& scene) {
+inline std::unique_ptr<SceneStrategy> make_strategy(std::string_view name, const Scene& scene) {
   return make_strategy(name, scene.strategies, scene.camera.frustum_def());
 }
 

@@ -9,14 +9,14 @@ int Scene::step_count() const {
   return static_cast<int>(std::ceil(sim.duration_s / sim.dt_s - 1e-9));
 }
 
-RunTotals simulate(const Scene& scene, Strategy& strategy,
+RunTotals simulate(const Scene& scene, SceneStrategy& strategy,
                    std::span<RunObserver* const> observers) {
   Run run(scene, strategy, observers);
   while (!run.done()) run.step();
   return run.finish();
 }
 
-RunTotals simulate(const Scene& scene, Strategy& strategy, const CameraMotion& camera,
+RunTotals simulate(const Scene& scene, SceneStrategy& strategy, const CameraMotion& camera,
                    std::span<RunObserver* const> observers) {
   Run run(scene, strategy, camera, observers);
   while (!run.done()) run.step();

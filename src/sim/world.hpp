@@ -13,7 +13,7 @@
 #include "geometry/fragment_state.hpp"
 #include "sim/explosion.hpp"
 #include "sim/scene.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace fragsim {
 

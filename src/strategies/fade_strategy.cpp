@@ -19,7 +19,7 @@ float fade_opacity(const FadeParams& p, double distance_m) {
   return static_cast<float>(std::clamp(a, 0.0, 1.0));
 }
 
-void FadeStrategy::step(const StepContext& ctx, StepOutput& out) {
+void FadeStrategy::step(const StepContext& ctx, SceneStepOutput& out) {
   // The opacity is the next frame's, the one the state after this step is drawn with: fragments
   // and camera moved on as the physics will move them (semi-implicit Euler, no force, the
   // rotation kept), as near-plane chooses its near distance. Only contacts make it differ.

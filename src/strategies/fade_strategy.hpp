@@ -2,7 +2,7 @@
 // `fade`: what game engines ship (Unity's VFX Camera Fade block, the dithered distance fades of
 // Unreal and Godot). It leaves the physics alone and applies no force: a fragment that comes
 // closer to the eye than start_m is drawn transparent in proportion, and not at all from end_m
-// in. It answers an opacity per fragment (StepOutput::opacity), which the metrics and the
+// in. It answers an opacity per fragment (SceneStepOutput::opacity), which the metrics and the
 // renderer read.
 //
 // "Distance to the eye" is that of the nearest point of the fragment's box (a convex piece: the
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "strategies/fade_params.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace fragsim {
 
@@ -25,12 +25,12 @@ double box_distance_m(const Eigen::Vector3d& eye_m, const FragmentState& f);
 // between.
 float fade_opacity(const FadeParams& params, double distance_m);
 
-class FadeStrategy final : public Strategy {
+class FadeStrategy final : public SceneStrategy {
  public:
   explicit FadeStrategy(const FadeParams& params) : params_(params) {}
   std::string name() const override { return "fade"; }
   void reset(int) override {}
-  void step(const StepContext& ctx, StepOutput& out) override;
+  void step(const StepContext& ctx, SceneStepOutput& out) override;
 
  private:
   FadeParams params_;

@@ -5,7 +5,7 @@
 
 namespace fragsim {
 
-void NearPlaneStrategy::step(const StepContext& ctx, StepOutput& out) {
+void NearPlaneStrategy::step(const StepContext& ctx, SceneStepOutput& out) {
   // The near plane chosen now is the one the next frame is drawn with: look at where the
   // fragments and the camera will be after this step (semi-implicit Euler, as the physics does).
   CameraPose next = ctx.camera;

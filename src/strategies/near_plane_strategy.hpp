@@ -4,16 +4,16 @@
 // precision, reported as the depth step at a reference distance (geometry/depth_buffer.hpp).
 
 #include "strategies/near_plane_params.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 
 namespace fragsim {
 
-class NearPlaneStrategy final : public Strategy {
+class NearPlaneStrategy final : public SceneStrategy {
  public:
   explicit NearPlaneStrategy(const NearPlaneParams& params) : params_(params) {}
   std::string name() const override { return "near-plane"; }
   void reset(int) override {}
-  void step(const StepContext& ctx, StepOutput& out) override;
+  void step(const StepContext& ctx, SceneStepOutput& out) override;
 
  private:
   NearPlaneParams params_;

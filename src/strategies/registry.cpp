@@ -59,7 +59,10 @@ const StrategyTable& strategy_table() {
           "the thesis: ballistic prediction against the camera's reachable ball and the force "
           "(3.4) toward the near rectangle's nearest edge (docs/method.md section 3)",
           edge_param_spec(),
-          [](const EdgeParams& p, const C&) { return std::make_unique<EdgeStrategy>(p); },
+          [](const EdgeParams& p, const C&) {
+            return std::make_unique<LibraryStrategy>(std::make_unique<EdgeStrategy>(p),
+                                                     p.predictor);
+          },
           &S::edge),
       strategy_entry(
           "edge-min",
@@ -148,8 +151,9 @@ void validate_strategy_settings(std::string_view name, const StrategySettings& s
   checked_entry(name, settings, camera, table);
 }
 
-std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
-                                        const FrustumDef& camera, const StrategyTable& table) {
+std::unique_ptr<SceneStrategy> make_strategy(std::string_view name,
+                                             const StrategySettings& settings,
+                                             const FrustumDef& camera, const StrategyTable& table) {
   return checked_entry(name, settings, camera, table).make(settings, camera);
 }
 

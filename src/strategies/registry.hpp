@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "strategies/param_spec.hpp"
-#include "strategies/strategy.hpp"
+#include "strategies/scene_strategy.hpp"
 #include "strategies/strategy_settings.hpp"
 
 namespace fragsim {
@@ -26,7 +26,7 @@ struct StrategyEntry {
   std::function<void(const StrategySettings&, const FrustumDef&)> check;
   // Only the rules across keys: the parser has already checked each value against its key.
   std::function<void(const StrategySettings&, const FrustumDef&)> check_across;
-  std::function<std::unique_ptr<Strategy>(const StrategySettings&, const FrustumDef&)> make;
+  std::function<std::unique_ptr<SceneStrategy>(const StrategySettings&, const FrustumDef&)> make;
   std::vector<TuningVariant> tuning;  // what the time-against-error bench tries (ParamSpec)
 };
 
@@ -63,7 +63,7 @@ StrategyEntry strategy_entry(std::string name, std::string description,
     across(s, c);
   };
   e.make = [get, make](const StrategySettings& s, const FrustumDef& c) {
-    return std::unique_ptr<Strategy>(make(get(s), c));
+    return as_scene_strategy(make(get(s), c));
   };
   e.tuning = spec.tuning;
   e.name = std::move(name);
@@ -95,8 +95,9 @@ void validate_strategy_settings(std::string_view name, const StrategySettings& s
                                 const StrategyTable& table = strategy_table());
 
 // The named strategy, validated first (validate_strategy_settings, the same errors).
-std::unique_ptr<Strategy> make_strategy(std::string_view name, const StrategySettings& settings,
-                                        const FrustumDef& camera,
-                                        const StrategyTable& table = strategy_table());
+std::unique_ptr<SceneStrategy> make_strategy(std::string_view name,
+                                             const StrategySettings& settings,
+                                             const FrustumDef& camera,
+                                             const StrategyTable& table = strategy_table());
 
 }  // namespace fragsim

@@ -32,16 +32,76 @@ struct Controller {
   ~Controller() { fragsim_controller_destroy(ctl); }
 };
 
+// A camera whole, its constants and its pose in one struct, as the tests write it; split into
+// fragsim_camera_def and fragsim_camera_pose at each step.
+struct WholeCamera {
+  fragsim_vec3 eye_m, right, up, forward, velocity_mps;
+  double fovy_deg, aspect, near_m, far_m;
+  fragsim_vec3 body_half_m;
+  double max_speed_mps, max_accel_mps2, max_turn_degps;
+};
+
+WholeCamera default_camera() {
+  const fragsim_camera_def d = fragsim_default_camera_def();
+  const fragsim_camera_pose p = fragsim_default_camera_pose();
+  return {p.eye_m,         p.right,  p.up,    p.forward,     p.velocity_mps,  d.fovy_deg,
+          d.aspect,        d.near_m, d.far_m, d.body_half_m, d.max_speed_mps, d.max_accel_mps2,
+          d.max_turn_degps};
+}
+
+// A step's input with its camera and fragments, as the tests change them.
+struct TestInput : fragsim_step_input {
+  WholeCamera camera;
+  const fragsim_fragment* fragments = nullptr;
+  int32_t fragment_count = 0;
+  fragsim_camera_pose pose{};
+};
+
+// Sets the camera's constants (they survive between steps; setting them again changes nothing of
+// the fragments' state) and steps with its pose. A refused set_cameras is answered as a refused
+// step would be: zero forces and stats.
+fragsim_status step_with(fragsim_controller_id ctl, TestInput* in, fragsim_vec3* forces,
+                         fragsim_step_stats* stats) {
+  if (in != nullptr) {
+    const WholeCamera& c = in->camera;
+    const fragsim_camera_def d{c.fovy_deg,    c.aspect,        c.near_m,         c.far_m,
+                               c.body_half_m, c.max_speed_mps, c.max_accel_mps2, c.max_turn_degps};
+    const fragsim_status s = fragsim_controller_set_cameras(ctl, &d, 1);
+    if (s != FRAGSIM_OK) {
+      if (forces != nullptr && in->fragment_count >= 0) {
+        for (int32_t i = 0; i < in->fragment_count; ++i) forces[i] = {0.0, 0.0, 0.0};
+      }
+      if (stats != nullptr) *stats = {};
+      return s;
+    }
+    in->pose = {c.eye_m, c.right, c.up, c.forward, c.velocity_mps};
+    in->camera_poses = &in->pose;
+    in->camera_count = 1;
+  }
+  return fragsim_controller_step(ctl, in, in != nullptr ? in->fragments : nullptr,
+                                 in != nullptr ? in->fragment_count : 0, forces, stats);
+}
+
+fragsim_status step_arrays(fragsim_controller_id ctl, TestInput* in,
+                           const fragsim_fragment_arrays* arrays, int32_t count,
+                           fragsim_step_stats* stats) {
+  const WholeCamera& c = in->camera;
+  const fragsim_camera_def d{c.fovy_deg,    c.aspect,        c.near_m,         c.far_m,
+                             c.body_half_m, c.max_speed_mps, c.max_accel_mps2, c.max_turn_degps};
+  if (fragsim_controller_set_cameras(ctl, &d, 1) != FRAGSIM_OK) return FRAGSIM_ERROR_INTERNAL;
+  in->pose = {c.eye_m, c.right, c.up, c.forward, c.velocity_mps};
+  in->camera_poses = &in->pose;
+  in->camera_count = 1;
+  return fragsim_controller_step_arrays(ctl, in, arrays, count, stats);
+}
+
 // A still camera at the origin looking down -z (the default camera), zero gravity unless asked.
-fragsim_step_input still_input(const std::vector<fragsim_fragment>& fragments) {
-  fragsim_step_input in{};
-  in.time_s = 0.0;
-  in.end_time_s = kInf;
-  in.dt_s = kDt;
+TestInput still_input(const std::vector<fragsim_fragment>& fragments) {
+  TestInput in;
+  static_cast<fragsim_step_input&>(in) = fragsim_default_step_input();
   in.gravity_mps2 = {0.0, 0.0, 0.0};
   in.ground_height_m = -10.0;
-  in.ground_normal = {0.0, 1.0, 0.0};  // a zero normal is refused (since 0.6)
-  in.camera = fragsim_default_camera();
+  in.camera = default_camera();
   in.fragments = fragments.data();
   in.fragment_count = static_cast<int32_t>(fragments.size());
   return in;
@@ -60,8 +120,7 @@ fragsim_fragment fragment(double x, double y, double z, double vx, double vy, do
 
 // The StepContext the library builds for `in` (the horizon cap goes to the strategy's
 // parameters; the shot's end, if any, is the context's).
-fragsim::StepContext context_for(const fragsim_step_input& in,
-                                 std::vector<fragsim::FragmentState>& states) {
+fragsim::StepContext context_for(const TestInput& in, std::vector<fragsim::FragmentState>& states) {
   states.clear();
   for (int32_t i = 0; i < in.fragment_count; ++i) {
     const fragsim_fragment& f = in.fragments[i];
@@ -89,7 +148,7 @@ fragsim::StepContext context_for(const fragsim_step_input& in,
   ctx.camera_velocity_mps = v(in.camera.velocity_mps);
   ctx.camera_max_speed_mps = in.camera.max_speed_mps;
   ctx.camera_max_accel_mps2 = in.camera.max_accel_mps2;
-  ctx.camera_max_turn_radps = in.camera.max_turn_radps;
+  ctx.camera_max_turn_degps = in.camera.max_turn_degps;
   ctx.camera_body_half_m = v(in.camera.body_half_m);
   ctx.gravity_mps2 = v(in.gravity_mps2);
   ctx.ground_height_m = in.ground_height_m;
@@ -141,7 +200,7 @@ TEST(ControlApi, DefaultsAreTheToolsDefaults) {
 
 // The default camera's frustum is the tool's (geometry/frustum.hpp), and what control.h says it is.
 TEST(ControlApi, DefaultCameraHasTheToolsDefaultFrustum) {
-  const fragsim_camera c = fragsim_default_camera();
+  const fragsim_camera_def c = fragsim_default_camera_def();
   EXPECT_EQ((fragsim::FrustumDef{c.fovy_deg, c.aspect, c.near_m, c.far_m}),
             fragsim::kDefaultFrustum);
   EXPECT_EQ((fragsim::FrustumDef{c.fovy_deg, c.aspect, c.near_m, c.far_m}),
@@ -224,20 +283,18 @@ TEST(ControlApi, NullArgumentsGiveAStatusNotACrash) {
   EXPECT_EQ(fragsim_controller_create(&def, nullptr, nullptr, 0), FRAGSIM_ERROR_NULL_ARGUMENT);
   Controller c(def);
   const std::vector<fragsim_fragment> frags{fragment(0, 0, -5, 0, 0, 10, 1)};
-  fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   std::vector<fragsim_vec3> forces(1, fragsim_vec3{7, 7, 7});
-  EXPECT_EQ(fragsim_controller_step(fragsim_controller_id{}, &in, forces.data(), nullptr),
+  EXPECT_EQ(step_with(fragsim_controller_id{}, &in, forces.data(), nullptr),
             FRAGSIM_ERROR_STALE_ID);
   EXPECT_EQ(forces[0].x, 0.0);  // zeroed: the input was readable
-  EXPECT_EQ(fragsim_controller_step(c.ctl, nullptr, forces.data(), nullptr),
-            FRAGSIM_ERROR_NULL_ARGUMENT);
-  EXPECT_EQ(fragsim_controller_step(c.ctl, &in, nullptr, nullptr), FRAGSIM_ERROR_NULL_ARGUMENT);
+  EXPECT_EQ(step_with(c.ctl, nullptr, forces.data(), nullptr), FRAGSIM_ERROR_NULL_ARGUMENT);
+  EXPECT_EQ(step_with(c.ctl, &in, nullptr, nullptr), FRAGSIM_ERROR_NULL_ARGUMENT);
   EXPECT_NE(std::string(fragsim_controller_last_error(c.ctl)).find("forces_N"), std::string::npos);
   in.fragments = nullptr;
-  EXPECT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr),
-            FRAGSIM_ERROR_NULL_ARGUMENT);
+  EXPECT_EQ(step_with(c.ctl, &in, forces.data(), nullptr), FRAGSIM_ERROR_NULL_ARGUMENT);
   in.fragment_count = 0;  // no fragments: NULL arrays are fine
-  EXPECT_EQ(fragsim_controller_step(c.ctl, &in, nullptr, nullptr), FRAGSIM_OK);
+  EXPECT_EQ(step_with(c.ctl, &in, nullptr, nullptr), FRAGSIM_OK);
   EXPECT_STREQ(fragsim_controller_last_error(c.ctl), "");
   EXPECT_NE(std::string(fragsim_controller_last_error(fragsim_controller_id{})).find("null id"),
             std::string::npos);
@@ -254,10 +311,10 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   const fragsim_controller_def def = fragsim_default_controller_def();
   Controller c(def);
   const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42)};
-  const fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   std::vector<fragsim_vec3> forces(1);
   fragsim_step_stats stats{};
-  ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+  ASSERT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
   const double t = 0.475;
   const double a = 0.18 / (0.5 * (t * t + t * kDt));
   EXPECT_NEAR(forces[0].y, 2.0 * a, 1e-9 * 2.0 * a);
@@ -287,9 +344,9 @@ TEST(ControlApi, ForbiddenTopEdgeSendsTheFragmentDown) {
   def.edge_min.edge_weights[0] = 0.0;
   Controller c(def);
   const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42)};
-  const fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   std::vector<fragsim_vec3> forces(1);
-  ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
+  ASSERT_EQ(step_with(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
   const double t = 0.475;
   const double a = 0.22 / (0.5 * (t * t + t * kDt));
   EXPECT_NEAR(forces[0].y, -2.0 * a, 1e-9 * 2.0 * a);
@@ -319,7 +376,7 @@ TEST(ControlApi, CoverMaxPushesTheWallOutOfTheCentre) {
     f.radius_m = 0.3;
     frags.push_back(f);
   }
-  const fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   int pushed[2] = {0, 0};
   for (int bounded = 0; bounded < 2; ++bounded) {
     fragsim_controller_def def = fragsim_default_controller_def();
@@ -327,7 +384,7 @@ TEST(ControlApi, CoverMaxPushesTheWallOutOfTheCentre) {
     Controller c(def);
     std::vector<fragsim_vec3> forces(frags.size());
     fragsim_step_stats stats{};
-    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    ASSERT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
     pushed[bounded] = stats.pushed;
 
     std::vector<fragsim::FragmentState> states;
@@ -357,10 +414,10 @@ TEST(ControlApi, StatsCountTheFragmentsRejectedCheaply) {
     def.edge_min.camera_model = model;
     Controller c(def);
     std::vector<fragsim_fragment> all = frags;
-    fragsim_step_input in = still_input(all);
+    TestInput in = still_input(all);
     std::vector<fragsim_vec3> forces(all.size());
     fragsim_step_stats stats{};
-    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    ASSERT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
     EXPECT_EQ(stats.rejected_cheaply, 4);
     EXPECT_EQ(stats.candidates, 0);
     EXPECT_EQ(stats.pushed, 0);
@@ -368,7 +425,7 @@ TEST(ControlApi, StatsCountTheFragmentsRejectedCheaply) {
     all.push_back(fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42));
     in = still_input(all);
     forces.resize(all.size());
-    ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    ASSERT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
     EXPECT_EQ(stats.rejected_cheaply, 4);
     EXPECT_EQ(stats.candidates, 1);
   }
@@ -382,7 +439,7 @@ TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
     frags.push_back(fragment(s, 1.6 + u, -6.0 - 0.05 * i, -0.3 * s, 2.0 - u, 9.0 + 0.1 * i,
                              1000 + static_cast<std::uint64_t>(i)));
   }
-  fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   in.gravity_mps2 = {0.0, -9.81, 0.0};
   in.ground_height_m = 0.0;
   in.time_s = 0.25;
@@ -406,7 +463,7 @@ TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
     int pushed = 0;
     for (int step = 0; step < 3; ++step) {  // edge's candidate set carries over
       std::vector<fragsim_vec3> forces(frags.size());
-      ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
+      ASSERT_EQ(step_with(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
       fragsim::StepOutput out;
       tool->step(context_for(in, states), out);
       const std::vector<fragsim_vec3> expected = dense(out, frags.size());
@@ -425,34 +482,30 @@ TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
 
 TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
   struct Case {
-    void (*change)(fragsim_step_input&, std::vector<fragsim_fragment>&);
+    void (*change)(TestInput&, std::vector<fragsim_fragment>&);
     fragsim_status status;
     const char* message_start;
   };
   const Case cases[] = {
-      {[](fragsim_step_input&, std::vector<fragsim_fragment>& f) { f[1].id = f[0].id; },
+      {[](TestInput&, std::vector<fragsim_fragment>& f) { f[1].id = f[0].id; },
        FRAGSIM_ERROR_DUPLICATE_ID, "fragments[1].id = 7: the id of fragments[0] too"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) { in.dt_s = 0.0; },
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.dt_s = 0.0; },
        FRAGSIM_ERROR_INVALID_ARGUMENT, "dt_s = 0"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) { in.dt_s = -kDt; },
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.dt_s = -kDt; },
        FRAGSIM_ERROR_INVALID_ARGUMENT, "dt_s"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) { in.gravity_mps2.y = kNaN; },
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.gravity_mps2.y = kNaN; },
        FRAGSIM_ERROR_INVALID_ARGUMENT, "gravity_mps2.y"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) {
+      {[](TestInput& in, std::vector<fragsim_fragment>&) {
          in.camera.up = {0, 1, 0.1};
        },
-       FRAGSIM_ERROR_INVALID_ARGUMENT, "camera.up has length"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) {
-         in.camera.max_accel_mps2 = kNaN;
-       },
-       FRAGSIM_ERROR_INVALID_ARGUMENT, "camera.max_accel_mps2"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) { in.camera.far_m = 0.05; },
-       FRAGSIM_ERROR_INVALID_ARGUMENT, "camera.far_m"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) {
-         in.camera.body_half_m.x = -0.1;
-       },
-       FRAGSIM_ERROR_INVALID_ARGUMENT, "camera.body_half_m.x"},
-      {[](fragsim_step_input& in, std::vector<fragsim_fragment>&) { in.fragment_count = -1; },
+       FRAGSIM_ERROR_INVALID_ARGUMENT, "camera_poses[0].up has length"},
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.camera.max_accel_mps2 = kNaN; },
+       FRAGSIM_ERROR_INVALID_ARGUMENT, "cameras[0].max_accel_mps2"},
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.camera.far_m = 0.05; },
+       FRAGSIM_ERROR_INVALID_ARGUMENT, "cameras[0].far_m"},
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.camera.body_half_m.x = -0.1; },
+       FRAGSIM_ERROR_INVALID_ARGUMENT, "cameras[0].body_half_m.x"},
+      {[](TestInput& in, std::vector<fragsim_fragment>&) { in.fragment_count = -1; },
        FRAGSIM_ERROR_INVALID_ARGUMENT, "fragment_count = -1"},
   };
   for (fragsim_strategy which : {FRAGSIM_STRATEGY_EDGE_MIN, FRAGSIM_STRATEGY_EDGE}) {
@@ -462,13 +515,12 @@ TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
     for (const Case& k : cases) {
       std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 7),
                                           fragment(0.1, 0.0, -4.0, 0.0, 0.0, 10.0, 8)};
-      fragsim_step_input in = still_input(frags);
+      TestInput in = still_input(frags);
       k.change(in, frags);
       std::vector<fragsim_vec3> forces(2, fragsim_vec3{7.0, 7.0, 7.0});
       fragsim_step_stats stats{};
       stats.pushed = 99;
-      EXPECT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), k.status)
-          << k.message_start;
+      EXPECT_EQ(step_with(c.ctl, &in, forces.data(), &stats), k.status) << k.message_start;
       const std::string message = fragsim_controller_last_error(c.ctl);
       EXPECT_EQ(message.rfind(k.message_start, 0), 0u) << message;
       EXPECT_EQ(stats.pushed, 0);
@@ -483,10 +535,10 @@ TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
     // the next good call sees both fragments as new.
     std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 7),
                                         fragment(0.1, 0.0, -4.0, 0.0, 0.0, 10.0, 8)};
-    const fragsim_step_input in = still_input(frags);
+    TestInput in = still_input(frags);
     std::vector<fragsim_vec3> forces(2);
     fragsim_step_stats stats{};
-    EXPECT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
+    EXPECT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK);
     EXPECT_EQ(stats.new_ids, 2);
     EXPECT_GT(forces[0].y, 0.0);
   }
@@ -505,11 +557,11 @@ TEST(ControlApi, ExtremeFiniteInputsNeverGiveANonFiniteForce) {
       fragsim_controller_def def = fragsim_default_controller_def();
       def.strategy = which;
       Controller c(def);
-      fragsim_step_input in = still_input(frags);
+      TestInput in = still_input(frags);
       in.dt_s = dt;
       in.gravity_mps2 = {0.0, -9.81, 0.0};
       std::vector<fragsim_vec3> forces(frags.size());
-      const fragsim_status s = fragsim_controller_step(c.ctl, &in, forces.data(), nullptr);
+      const fragsim_status s = step_with(c.ctl, &in, forces.data(), nullptr);
       EXPECT_TRUE(s == FRAGSIM_OK || s == FRAGSIM_ERROR_INTERNAL) << s;
       for (const fragsim_vec3& f : forces) {
         EXPECT_TRUE(std::isfinite(f.x) && std::isfinite(f.y) && std::isfinite(f.z));
@@ -527,10 +579,10 @@ TEST(ControlApi, TheHorizonCapDecidesHowFarAheadPathsAreExamined) {
       fragsim_controller_def def = fragsim_default_controller_def();
       def.horizon_cap_s = cap;
       Controller c(def);
-      fragsim_step_input in = still_input(frags);
+      TestInput in = still_input(frags);
       in.end_time_s = end;
       std::vector<fragsim_vec3> forces(1);
-      ASSERT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
+      ASSERT_EQ(step_with(c.ctl, &in, forces.data(), nullptr), FRAGSIM_OK);
       const bool seen = cap > 4.0 && end > 4.0;
       EXPECT_EQ(forces[0].y > 0.0, seen) << "cap " << cap << " end " << end;
     }
@@ -549,9 +601,9 @@ TEST(ControlApi, EdgeKeepsItsCandidateSetByIdAsFragmentsComeAndGo) {
   fragsim_fragment turned = away;  // the same fragment after a bounce: now at the camera
   turned.velocity_mps.z = 10.0;
   auto step = [&c](const std::vector<fragsim_fragment>& frags, fragsim_step_stats& stats) {
-    fragsim_step_input in = still_input(frags);
+    TestInput in = still_input(frags);
     std::vector<fragsim_vec3> forces(frags.size());
-    EXPECT_EQ(fragsim_controller_step(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK)
+    EXPECT_EQ(step_with(c.ctl, &in, forces.data(), &stats), FRAGSIM_OK)
         << fragsim_controller_last_error(c.ctl);
     return forces;
   };
@@ -616,10 +668,10 @@ TEST(ControlApi, StridedArraysGiveTheSameForcesAsStructs) {
   const fragsim_controller_def def = fragsim_default_controller_def();
   Controller a(def);
   Controller b(def);
-  fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   std::vector<fragsim_vec3> expected(frags.size());
   fragsim_step_stats sa{}, sb{};
-  ASSERT_EQ(fragsim_controller_step(a.ctl, &in, expected.data(), &sa), FRAGSIM_OK);
+  ASSERT_EQ(step_with(a.ctl, &in, expected.data(), &sa), FRAGSIM_OK);
   std::vector<double> out(4 * frags.size(), -1.0);  // stride of 4 doubles: the 4th untouched
   fragsim_fragment_arrays arrays{};
   arrays.position_m = bodies[0].position;
@@ -634,9 +686,7 @@ TEST(ControlApi, StridedArraysGiveTheSameForcesAsStructs) {
   arrays.id_stride_bytes = sizeof(std::uint64_t);
   arrays.force_N = out.data();
   arrays.force_stride_bytes = 4 * sizeof(double);
-  ASSERT_EQ(
-      fragsim_controller_step_arrays(b.ctl, &in, &arrays, static_cast<int32_t>(frags.size()), &sb),
-      FRAGSIM_OK);
+  ASSERT_EQ(step_arrays(b.ctl, &in, &arrays, static_cast<int32_t>(frags.size()), &sb), FRAGSIM_OK);
   EXPECT_GT(sa.pushed, 0);
   EXPECT_EQ(sa.pushed, sb.pushed);
   for (std::size_t i = 0; i < frags.size(); ++i) {
@@ -646,8 +696,7 @@ TEST(ControlApi, StridedArraysGiveTheSameForcesAsStructs) {
     EXPECT_EQ(out[4 * i + 3], -1.0);
   }
   arrays.id = nullptr;
-  EXPECT_EQ(fragsim_controller_step_arrays(b.ctl, &in, &arrays, 20, nullptr),
-            FRAGSIM_ERROR_NULL_ARGUMENT);
+  EXPECT_EQ(step_arrays(b.ctl, &in, &arrays, 20, nullptr), FRAGSIM_ERROR_NULL_ARGUMENT);
   EXPECT_EQ(out[0], 0.0);
 }
 
@@ -657,14 +706,14 @@ TEST(ControlApi, ControllersAreIndependent) {
   Controller a(def);
   Controller b(def);
   const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 1)};
-  fragsim_step_input in = still_input(frags);
+  TestInput in = still_input(frags);
   std::vector<fragsim_vec3> fa(1), fb(1);
-  ASSERT_EQ(fragsim_controller_step(a.ctl, &in, fa.data(), nullptr), FRAGSIM_OK);
+  ASSERT_EQ(step_with(a.ctl, &in, fa.data(), nullptr), FRAGSIM_OK);
   in.fragment_count = -3;  // a refused call on b changes nothing of a
-  EXPECT_NE(fragsim_controller_step(b.ctl, &in, fb.data(), nullptr), FRAGSIM_OK);
+  EXPECT_NE(step_with(b.ctl, &in, fb.data(), nullptr), FRAGSIM_OK);
   EXPECT_STREQ(fragsim_controller_last_error(a.ctl), "");
   in.fragment_count = 1;
-  ASSERT_EQ(fragsim_controller_step(b.ctl, &in, fb.data(), nullptr), FRAGSIM_OK);
+  ASSERT_EQ(step_with(b.ctl, &in, fb.data(), nullptr), FRAGSIM_OK);
   EXPECT_EQ(std::memcmp(fa.data(), fb.data(), sizeof(fragsim_vec3)), 0);
 }
 

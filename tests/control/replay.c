@@ -90,6 +90,8 @@ int main(int argc, char** argv) {
   fragsim_vec3* forces = NULL;
   fragsim_vec3* expected = NULL;
   int32_t capacity = 0;
+  fragsim_camera_def camera_set;
+  int cameras_set = 0;
 
   if (argc < 2 || argc > 3) {
     fprintf(stderr, "usage: replay DUMP [--arrays]\n");
@@ -134,7 +136,9 @@ int main(int argc, char** argv) {
   }
 
   for (s = 0; s < step_count; ++s) {
-    fragsim_step_input in;
+    fragsim_step_input in = fragsim_default_step_input();
+    fragsim_camera_def camera = fragsim_default_camera_def();
+    fragsim_camera_pose pose = fragsim_default_camera_pose();
     fragsim_step_stats stats;
     fragsim_status status;
     int32_t n, force_count, i;
@@ -153,23 +157,22 @@ int main(int argc, char** argv) {
         return 2;
       }
     }
-    memset(&in, 0, sizeof in);
     in.time_s = take_double(&r);
     in.dt_s = take_double(&r);
     in.end_time_s = take_double(&r);
-    in.camera.eye_m = take_vec3(&r);
-    in.camera.right = take_vec3(&r);
-    in.camera.up = take_vec3(&r);
-    in.camera.forward = take_vec3(&r);
-    in.camera.fovy_deg = take_double(&r);
-    in.camera.aspect = take_double(&r);
-    in.camera.near_m = take_double(&r);
-    in.camera.far_m = take_double(&r);
-    in.camera.velocity_mps = take_vec3(&r);
-    in.camera.max_speed_mps = take_double(&r);
-    in.camera.max_accel_mps2 = take_double(&r);
-    in.camera.max_turn_radps = take_double(&r);
-    in.camera.body_half_m = take_vec3(&r);
+    pose.eye_m = take_vec3(&r);
+    pose.right = take_vec3(&r);
+    pose.up = take_vec3(&r);
+    pose.forward = take_vec3(&r);
+    camera.fovy_deg = take_double(&r);
+    camera.aspect = take_double(&r);
+    camera.near_m = take_double(&r);
+    camera.far_m = take_double(&r);
+    pose.velocity_mps = take_vec3(&r);
+    camera.max_speed_mps = take_double(&r);
+    camera.max_accel_mps2 = take_double(&r);
+    camera.max_turn_degps = take_double(&r);
+    camera.body_half_m = take_vec3(&r);
     in.gravity_mps2 = take_vec3(&r);
     in.ground_height_m = take_double(&r);
     /* The tool's world is y-up (the dump carries no normal). */
@@ -199,12 +202,22 @@ int main(int argc, char** argv) {
       expected[which] = take_vec3(&r);
     }
     if (r.bad) break;
-    in.fragments = fragments;
-    in.fragment_count = n;
+    /* The camera's constants are set once, and again only when the dump's change (they never do
+     * in the tool's scenes, but a replay must not assume it). */
+    if (!cameras_set || memcmp(&camera, &camera_set, sizeof camera) != 0) {
+      if (fragsim_controller_set_cameras(ctl, &camera, 1) != FRAGSIM_OK) {
+        fprintf(stderr, "replay: step %u: set_cameras: %s\n", (unsigned)s,
+                fragsim_controller_last_error(ctl));
+        return 1;
+      }
+      camera_set = camera;
+      cameras_set = 1;
+    }
+    in.camera_poses = &pose;
+    in.camera_count = 1;
 
     if (use_arrays) {
-      fragsim_fragment_arrays a;
-      memset(&a, 0, sizeof a); /* scalar_type 0: doubles */
+      fragsim_fragment_arrays a = fragsim_default_fragment_arrays();
       a.position_m = &fragments[0].position_m.x;
       a.position_stride_bytes = sizeof *fragments;
       a.velocity_mps = &fragments[0].velocity_mps.x;
@@ -221,7 +234,7 @@ int main(int argc, char** argv) {
       a.force_stride_bytes = sizeof *forces;
       status = fragsim_controller_step_arrays(ctl, &in, &a, n, &stats);
     } else {
-      status = fragsim_controller_step(ctl, &in, forces, &stats);
+      status = fragsim_controller_step(ctl, &in, fragments, n, forces, &stats);
     }
     if (status != FRAGSIM_OK) {
       fprintf(stderr, "replay: step %u: %s: %s\n", (unsigned)s, fragsim_status_string(status),

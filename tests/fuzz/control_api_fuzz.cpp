@@ -1,19 +1,21 @@
 // libFuzzer target: the controller library's C API (fragsim/control.h) as a careless engine drives
 // it: random defs, cameras, fragments with NaN, infinities, huge and negative numbers, ids that
-// repeat, counts out of range, struct or strided-array input with random strides, several steps
-// on one controller, cameras set once (0 to 3 of them, or a count out of range) and poses for
-// some or all of them, and allocations that fail.
+// repeat, counts out of range, masses beyond the rule's range, struct or strided-array input with
+// random strides, several steps on one controller, cameras set once (none, 1 to 3 of them, or a
+// count out of range; any aspect) and poses for some or all of them, allocations that fail, and a
+// task system that splits each run into random ranges on random workers.
 //
 // Input: bytes read by FuzzedDataProvider (choices first, then numbers; missing bytes read as 0).
 //
 // Two controllers get the same calls: A sometimes has one allocation of a call fail (this file
-// replaces operator new; the Nth allocation of the call throws), B never does. Checks
-// (__builtin_trap() on violation):
+// replaces operator new; the Nth allocation of the call throws) and may run on a task system of 1
+// to 8 workers that runs its ranges in a shuffled order on this thread; B never fails and runs on
+// the calling thread. Checks (__builtin_trap() on violation):
 //  - every status is one of fragsim_status; last_error is never NULL;
 //  - every force written is finite; after a failed call with a valid count, every force is 0;
 //  - stats: counts within [0, count], first_skipped in [-1, count), pushed <= count;
 //  - after FRAGSIM_ERROR_OUT_OF_MEMORY, A retried without a failure gives B's status and B's forces
-//    bit for bit: the failure left A as it was;
+//    bit for bit: the failure left A as it was; and without one, A's workers change no bit;
 //  - a destroyed controller's id is refused (FRAGSIM_ERROR_STALE_ID), destroying it again too.
 
 #include <fuzzer/FuzzedDataProvider.h>
@@ -74,6 +76,40 @@ fragsim_vec3 vec(FuzzedDataProvider& in, double lo, double hi) {
   return {number(in, lo, hi), number(in, lo, hi), number(in, lo, hi)};
 }
 
+// A task system of the fuzzer's: each run split at random points into ranges, run in a shuffled
+// order on random workers, all on this thread before enqueue returns (NULL: nothing to finish).
+struct FuzzTasks {
+  std::vector<std::uint8_t> choices;  // consumed in turn, then reused
+  std::size_t next = 0;
+  int workers = 1;
+  std::uint8_t pick() {
+    if (choices.empty()) return 0;
+    const std::uint8_t c = choices[next % choices.size()];
+    ++next;
+    return c;
+  }
+};
+
+void* fuzz_enqueue(fragsim_task_fn* task, int32_t item_count, int32_t min_range, void* context,
+                   void* user) {
+  FuzzTasks& t = *static_cast<FuzzTasks*>(user);
+  std::vector<std::pair<int32_t, int32_t>> ranges;
+  int32_t begin = 0;
+  while (begin < item_count) {
+    const int32_t span = std::max<int32_t>(min_range, 1 + t.pick() % 97);
+    const int32_t end = std::min<int32_t>(item_count, begin + span);
+    ranges.push_back({begin, end});
+    begin = end;
+  }
+  for (std::size_t i = ranges.size(); i > 1; --i) std::swap(ranges[i - 1], ranges[t.pick() % i]);
+  for (const auto& r : ranges) {
+    task(r.first, r.second, static_cast<uint32_t>(t.pick() % t.workers), context);
+  }
+  return nullptr;
+}
+
+void fuzz_finish(void*, void*) {}
+
 bool valid_status(fragsim_status s) {
   return static_cast<int>(s) >= FRAGSIM_OK && static_cast<int>(s) <= FRAGSIM_ERROR_STALE_ID;
 }
@@ -104,24 +140,15 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
     const int pick = in.ConsumeIntegralInRange<int>(0, 5);
     s.ground_normal = pick < 5 ? axes[pick] : vec(in, -1, 1);
   }
-  fragsim_camera& cam = s.camera;
-  if (in.ConsumeBool()) cam.eye_m = vec(in, -10, 10);
-  if (in.ConsumeBool()) cam.velocity_mps = vec(in, -60, 60);
-  if (in.ConsumeBool()) cam.forward = vec(in, -1, 1);  // mostly not unit: refused
-  if (in.ConsumeBool()) cam.fovy_deg = number(in, 0, 180);
-  if (in.ConsumeBool()) cam.near_m = number(in, 0, 2);
-  if (in.ConsumeBool()) cam.body_half_m = vec(in, 0, 1);
-  if (in.ConsumeBool()) cam.max_speed_mps = number(in, 0, 100);
-  if (in.ConsumeBool()) cam.max_accel_mps2 = number(in, 0, 1000);
-  if (in.ConsumeBool()) cam.max_turn_radps = number(in, 0, 100);
-  if (in.ConsumeBool()) {  // several cameras: often the controller's count, sometimes not
-    const int k = in.ConsumeIntegralInRange<int>(0, 4);
+  {  // the poses: often as many as the controller's cameras, sometimes not
+    const int k = in.ConsumeBool() ? 1 : in.ConsumeIntegralInRange<int>(0, 4);
     for (int j = 0; j < k; ++j) {
       fragsim_camera_pose p = fragsim_default_camera_pose();
       p.eye_m = {0.064 * j, 0.0, 0.0};
       if (in.ConsumeBool()) p.eye_m = vec(in, -10, 10);
       if (in.ConsumeBool()) p.velocity_mps = vec(in, -60, 60);
-      if (in.ConsumeBool()) {  // facing the other way, or not unit: refused
+      if (in.ConsumeBool()) p.up = vec(in, -1, 1);  // mostly not unit: refused
+      if (in.ConsumeBool()) {                       // facing the other way, or not unit: refused
         p.forward = in.ConsumeBool() ? fragsim_vec3{0, 0, 1} : vec(in, -1, 1);
         p.right = {-1, 0, 0};
       }
@@ -137,7 +164,9 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
     f.position_m = {number(in, -3, 3), number(in, -3, 3), number(in, -12, 1)};
     f.velocity_mps = {number(in, -5, 5), number(in, -5, 5), number(in, -5, 30)};
     f.radius_m = number(in, 0, 0.5);
-    f.mass_kg = number(in, 0, 10);
+    f.mass_kg = in.ConsumeIntegralInRange<int>(0, 7) == 0
+                    ? (in.ConsumeBool() ? 3.4028234663852886e38 : number(in, 1e-30, 1e30))
+                    : number(in, 0, 10);
     f.id = in.ConsumeIntegralInRange<std::uint64_t>(0, 64);  // repeats happen: refused
     f.touched = in.ConsumeIntegral<std::uint8_t>();
     c.fragments.push_back(f);
@@ -147,8 +176,6 @@ Call make_call(FuzzedDataProvider& in, double time_s) {
     c.count = in.ConsumeBool() ? -1 - in.ConsumeIntegralInRange<int32_t>(0, 5)
                                : FRAGSIM_MAX_FRAGMENTS + 1;
   }
-  s.fragments = c.fragments.empty() ? nullptr : c.fragments.data();
-  s.fragment_count = c.count;
   c.arrays = in.ConsumeBool();
   c.floats = c.arrays && in.ConsumeBool();
   if (c.floats) {
@@ -256,8 +283,9 @@ Result run(fragsim_controller_id id, const Call& call_in, long fail_at) {
   } else {
     g_allocations = 0;
     g_fail_at = fail_at;
-    r.status =
-        fragsim_controller_step(id, &call.input, forces.empty() ? nullptr : forces.data(), &stats);
+    r.status = fragsim_controller_step(
+        id, &call.input, call.fragments.empty() ? nullptr : call.fragments.data(), call.count,
+        forces.empty() ? nullptr : forces.data(), &stats);
     g_fail_at = 0;
     for (const fragsim_vec3& f : forces) r.forces.insert(r.forces.end(), {f.x, f.y, f.z});
   }
@@ -278,6 +306,8 @@ Result run(fragsim_controller_id id, const Call& call_in, long fail_at) {
     require(stats.pushed <= c && stats.skipped <= c && stats.rejected_cheaply <= c);
     require(stats.first_skipped >= -1 && stats.first_skipped < c);
     require((stats.skipped == 0) == (stats.first_skipped == -1));
+    require(stats.below_ground >= 0 && stats.below_ground <= c);
+    require((stats.below_ground == 0) == (stats.first_below_ground == -1));
     require(stats.conflicts >= 0 && stats.conflicts <= c);
     require(stats.first_conflict >= -1 && stats.first_conflict < c);
     require((stats.conflicts == 0) == (stats.first_conflict == -1));
@@ -302,10 +332,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (in.ConsumeBool()) def.edge.replan = FRAGSIM_EDGE_REPLAN_ALWAYS;
   if (in.ConsumeBool()) def.horizon_cap_s = number(in, 0, 10);
+  fragsim_controller_def def_a = def;
+  FuzzTasks tasks;
+  if (in.ConsumeBool()) {
+    tasks.workers = in.ConsumeIntegralInRange<int>(1, 8);
+    tasks.choices = in.ConsumeBytes<std::uint8_t>(in.ConsumeIntegralInRange<int>(1, 16));
+    def_a.enqueue_task = fuzz_enqueue;
+    def_a.finish_task = fuzz_finish;
+    def_a.user_task_context = &tasks;
+    def_a.worker_count = tasks.workers;
+  }
   fragsim_controller_id a{};
   fragsim_controller_id b{};
   char message[128];
-  const fragsim_status created = fragsim_controller_create(&def, &a, message, sizeof message);
+  const fragsim_status created = fragsim_controller_create(&def_a, &a, message, sizeof message);
   require(valid_status(created));
   if (created != FRAGSIM_OK) {
     require(fragsim_controller_id_is_null(a) && message[0] != '\0');
@@ -316,7 +356,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int32_t room = in.ConsumeIntegralInRange<int32_t>(-2, 64);
     require(fragsim_controller_reserve(a, room) == fragsim_controller_reserve(b, room));
   }
-  if (in.ConsumeBool()) {  // cameras set once; a failed allocation must leave A as B
+  if (in.ConsumeIntegralInRange<int>(0, 7) != 0) {  // cameras set once (else every step is
+                                                    // refused); a failed allocation leaves A as B
     const int k = in.ConsumeIntegralInRange<int>(0, 15) == 0 ? FRAGSIM_MAX_CAMERAS + 1
                                                              : in.ConsumeIntegralInRange<int>(1, 3);
     std::vector<fragsim_camera_def> defs(static_cast<std::size_t>(std::max(k, 1)),
@@ -326,7 +367,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (in.ConsumeBool()) d.near_m = number(in, 0, 2);
       if (in.ConsumeBool()) d.body_half_m = vec(in, 0, 1);
       if (in.ConsumeBool()) d.max_speed_mps = number(in, 0, 100);
-      if (in.ConsumeBool()) d.max_turn_radps = number(in, 0, 100);
+      if (in.ConsumeBool()) d.max_turn_degps = number(in, 0, 1000);
+      if (in.ConsumeBool()) {  // any aspect, on a log scale: the occlusion bound's grid follows it
+        d.aspect = std::pow(10.0, in.ConsumeFloatingPointInRange<double>(-13.0, 4.0));
+      }
     }
     const fragsim_status sb = fragsim_controller_set_cameras(b, defs.data(), k);
     g_allocations = 0;
@@ -358,7 +402,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   require(fragsim_controller_destroy(a) == FRAGSIM_OK);
   require(fragsim_controller_destroy(a) == FRAGSIM_ERROR_STALE_ID);
   fragsim_step_input none = fragsim_default_step_input();
-  require(fragsim_controller_step(a, &none, nullptr, nullptr) == FRAGSIM_ERROR_STALE_ID);
+  require(fragsim_controller_step(a, &none, nullptr, 0, nullptr, nullptr) ==
+          FRAGSIM_ERROR_STALE_ID);
   require(fragsim_controller_destroy(b) == FRAGSIM_OK);
   return 0;
 }

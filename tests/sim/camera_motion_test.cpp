@@ -211,11 +211,11 @@ TEST(CameraMotion, DeclaredLimitsComeFromThePlayerOnly) {
   CameraLimits l = declared_limits(s.camera);
   EXPECT_EQ(l.max_speed_mps, 4.0);
   EXPECT_EQ(l.max_accel_mps2, 20.0);
-  EXPECT_NEAR(l.max_turn_radps, kPi / 2.0, 1e-15);
+  EXPECT_EQ(l.max_turn_degps, 90.0);
   s.camera.mode = CameraMode::kPath;
   l = declared_limits(s.camera);
   EXPECT_EQ(l.max_accel_mps2, kUndeclaredBound);  // not declared
-  EXPECT_EQ(l.max_turn_radps, kUndeclaredBound);
+  EXPECT_EQ(l.max_turn_degps, kUndeclaredBound);
   s.camera.mode = CameraMode::kPlayer;
   s.camera.player_accel_mps2 = kInf;  // declared: no bound
   EXPECT_EQ(declared_limits(s.camera).max_accel_mps2, kInf);

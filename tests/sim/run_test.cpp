@@ -54,13 +54,13 @@ class CallLog final : public RunObserver {
 };
 
 // A strategy that keeps what each step told it, and pushes nothing.
-class Listener final : public Strategy {
+class Listener final : public SceneStrategy {
  public:
   std::vector<StepContext> seen;
   std::vector<Eigen::Vector3d> first_fragment_m;
   std::string name() const override { return "listener"; }
   void reset(int) override { seen.clear(); }
-  void step(const StepContext& ctx, StepOutput&) override {
+  void step(const StepContext& ctx, SceneStepOutput&) override {
     seen.push_back(ctx);
     first_fragment_m.push_back(ctx.fragments[0].position_m);
   }

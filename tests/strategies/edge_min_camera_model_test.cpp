@@ -301,19 +301,19 @@ TEST(EdgeMinCameraModel, UndeclaredBoundsFallBackToTheParameters) {
   StepContext ctx = context(Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), frags);
   for (double undeclared : {kUndeclaredBound, -0.5, std::numeric_limits<double>::quiet_NaN()}) {
     ctx.camera_max_accel_mps2 = undeclared;
-    ctx.camera_max_turn_radps = undeclared;
+    ctx.camera_max_turn_degps = undeclared;
     EXPECT_EQ(s.assumed_accel_mps2(ctx), kA);
     EXPECT_NEAR(s.assumed_turn_radps(ctx), 0.5 * kPi, 1e-15);
   }
   // 0 is a bound, not "undeclared": a camera that cannot accelerate or turn.
   ctx.camera_max_accel_mps2 = 0.0;
-  ctx.camera_max_turn_radps = 0.0;
+  ctx.camera_max_turn_degps = 0.0;
   EXPECT_EQ(s.assumed_accel_mps2(ctx), 0.0);
   EXPECT_EQ(s.assumed_turn_radps(ctx), 0.0);
   ctx.camera_max_accel_mps2 = 7.0;
-  ctx.camera_max_turn_radps = 2.0;
+  ctx.camera_max_turn_degps = 45.0;
   EXPECT_EQ(s.assumed_accel_mps2(ctx), 7.0);
-  EXPECT_EQ(s.assumed_turn_radps(ctx), 2.0);
+  EXPECT_NEAR(s.assumed_turn_radps(ctx), 0.25 * kPi, 1e-15);
 }
 
 // A player with instant turns declares an infinite acceleration: bounded_accel then keeps only
@@ -326,7 +326,7 @@ TEST(EdgeMinCameraModel, DeclaredInfiniteAccelerationIsTheReachableBall) {
                                            fragment({0, -0.2, -2}, {0, 0.4, 11.0})};
   StepContext ctx = context(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0, 0), frags);
   ctx.camera_max_accel_mps2 = std::numeric_limits<double>::infinity();
-  ctx.camera_max_turn_radps = 0.5 * kPi;
+  ctx.camera_max_turn_degps = 90.0;
   int pushed = 0;
   for (double t : {0.0, 0.2, 0.25, 0.3}) {
     ctx.t_s = t;

@@ -234,18 +234,17 @@ TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
     f.id = id++;
     frags.push_back(f);
   }
-  fragsim_step_input in{};
-  in.end_time_s = kInf;
+  const fragsim_camera_def camera = fragsim_default_camera_def();
+  ASSERT_EQ(fragsim_controller_set_cameras(ctl, &camera, 1), FRAGSIM_OK);
+  const fragsim_camera_pose pose = fragsim_default_camera_pose();
+  fragsim_step_input in = fragsim_default_step_input();
   in.dt_s = kDt;
-  in.ground_height_m = -kInf;  // no ground
-  in.ground_normal = {0.0, 1.0, 0.0};
-  in.camera = fragsim_default_camera();
-  in.camera.body_half_m = {0.15, 0.1, 0.15};
-  in.fragments = frags.data();
-  in.fragment_count = 3;
+  in.gravity_mps2 = {0.0, 0.0, 0.0};
+  in.camera_poses = &pose;
+  in.camera_count = 1;
   std::vector<fragsim_vec3> forces(3);
   fragsim_step_stats stats{};
-  ASSERT_EQ(fragsim_controller_step(ctl, &in, forces.data(), &stats), FRAGSIM_OK)
+  ASSERT_EQ(fragsim_controller_step(ctl, &in, frags.data(), 3, forces.data(), &stats), FRAGSIM_OK)
       << fragsim_controller_last_error(ctl);
   EXPECT_EQ(stats.deferred, 2);
   EXPECT_EQ(stats.pushed, 1);
@@ -260,10 +259,8 @@ TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
   fast.velocity_mps = {0.0, 0.0, 10.0};
   fast.id = 7;
   next.push_back(fast);
-  in.fragments = next.data();
-  in.fragment_count = 4;
   forces.assign(4, fragsim_vec3{});
-  ASSERT_EQ(fragsim_controller_step(ctl, &in, forces.data(), &stats), FRAGSIM_OK)
+  ASSERT_EQ(fragsim_controller_step(ctl, &in, next.data(), 4, forces.data(), &stats), FRAGSIM_OK)
       << fragsim_controller_last_error(ctl);
   EXPECT_EQ(stats.deferred, 3);
   EXPECT_EQ(std::memcmp(&forces[1], &solved, sizeof solved), 0);

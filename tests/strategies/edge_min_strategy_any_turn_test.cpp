@@ -62,7 +62,7 @@ StepContext context(double roll_rad, double turn_radps, std::span<const Fragment
   ctx.camera.forward = {0.0, 0.0, -1.0};
   ctx.camera_max_speed_mps = 0.0;
   ctx.camera_max_accel_mps2 = 0.0;
-  ctx.camera_max_turn_radps = turn_radps;
+  ctx.camera_max_turn_degps = turn_radps * 180.0 / kPi;
   ctx.camera_body_half_m = {0.15, 0.1, 0.15};
   ctx.fragments = fragments;
   return ctx;

@@ -72,7 +72,7 @@ TEST(FadeStrategy, AnswersTheNextFramesOpacityAndNoForce) {
   ctx.camera.eye_m = {0.0, 1.6, 0.0};
   ctx.camera_velocity_mps = {0.0, 0.0, -6.0};  // the eye moves 0.1 m toward it: eye at -0.1
   ctx.fragments = frags;
-  StepOutput out;
+  SceneStepOutput out;
   fade.step(ctx, out);
   EXPECT_TRUE(out.forces.empty());
   ASSERT_EQ(out.opacity.size(), 2u);

@@ -28,12 +28,12 @@ const ParamSpec<ProbeParams>& probe_param_spec() {
   return spec;
 }
 
-class ProbeStrategy : public Strategy {
+class ProbeStrategy : public SceneStrategy {
  public:
   explicit ProbeStrategy(const ProbeParams& p) : params_(p) {}
   std::string name() const override { return "probe"; }
   void reset(int) override {}
-  void step(const StepContext&, StepOutput&) override {}
+  void step(const StepContext&, SceneStepOutput&) override {}
   const ProbeParams& params() const { return params_; }
 
  private:

@@ -32,6 +32,17 @@ static_assert(kMaxFragments == std::numeric_limits<std::int32_t>::max() / 4);
 constexpr const char* kStaleMessage =
     "controller: a stale id (destroyed) or the null id (never created)";
 
+// The rule a fragment count breaks, with its value.
+struct CountRule {
+  char text[96];
+};
+CountRule count_rule(std::int32_t count) {
+  CountRule r;
+  std::snprintf(r.text, sizeof r.text, "fragment_count = %d: must be in [0, %d]",
+                static_cast<int>(count), kMaxFragments);
+  return r;
+}
+
 void copy_message(const char* text, char* message, std::size_t size) {
   if (message == nullptr || size == 0) return;
   const std::size_t n = std::min(std::strlen(text), size - 1);
@@ -117,29 +128,15 @@ FRAGSIM_API fragsim_step_input fragsim_default_step_input(void) {
   // No ground until the game says where it is: paths are then examined to horizon_cap_s, which
   // pushes no less than a known ground would.
   in.ground_height_m = -std::numeric_limits<double>::infinity();
-  in.ground_normal = {0.0, 1.0, 0.0};  // y up, as before 0.6
-  in.camera = fragsim_default_camera();
-  in.fragments = nullptr;
-  in.fragment_count = 0;
+  in.ground_normal = {0.0, 1.0, 0.0};
   in.camera_poses = nullptr;
-  in.camera_count = 0;  // one camera, in.camera, as before 0.7
+  in.camera_count = 0;
   return in;
 }
 
 FRAGSIM_API fragsim_camera_def fragsim_default_camera_def(void) {
-  return fragsim::control::def_of(fragsim_default_camera());
-}
-
-FRAGSIM_API fragsim_camera_pose fragsim_default_camera_pose(void) {
-  return fragsim::control::pose_of(fragsim_default_camera());
-}
-
-FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
-  fragsim_camera c;
+  fragsim_camera_def c;
   std::memset(&c, 0, sizeof c);
-  c.right = {1.0, 0.0, 0.0};
-  c.up = {0.0, 1.0, 0.0};
-  c.forward = {0.0, 0.0, -1.0};
   // The tool's default frustum, from its one home (geometry/frustum.hpp).
   c.fovy_deg = fragsim::kDefaultFrustum.fovy_deg;
   c.aspect = fragsim::kDefaultFrustum.aspect;
@@ -148,8 +145,37 @@ FRAGSIM_API fragsim_camera fragsim_default_camera(void) {
   c.body_half_m = {0.15, 0.1, 0.15};
   c.max_speed_mps = 3.0;
   c.max_accel_mps2 = FRAGSIM_UNDECLARED;
-  c.max_turn_radps = FRAGSIM_UNDECLARED;
+  c.max_turn_degps = FRAGSIM_UNDECLARED;
   return c;
+}
+
+FRAGSIM_API fragsim_camera_pose fragsim_default_camera_pose(void) {
+  fragsim_camera_pose p;
+  std::memset(&p, 0, sizeof p);
+  p.right = {1.0, 0.0, 0.0};
+  p.up = {0.0, 1.0, 0.0};
+  p.forward = {0.0, 0.0, -1.0};
+  return p;
+}
+
+FRAGSIM_API fragsim_fragment fragsim_default_fragment(void) {
+  fragsim_fragment f;
+  std::memset(&f, 0, sizeof f);
+  return f;
+}
+
+FRAGSIM_API fragsim_fragment_arrays fragsim_default_fragment_arrays(void) {
+  fragsim_fragment_arrays a;
+  std::memset(&a, 0, sizeof a);
+  a.position_stride_bytes = 3 * sizeof(double);
+  a.velocity_stride_bytes = 3 * sizeof(double);
+  a.radius_stride_bytes = sizeof(double);
+  a.mass_stride_bytes = sizeof(double);
+  a.id_stride_bytes = sizeof(std::uint64_t);
+  a.touched_stride_bytes = sizeof(std::uint8_t);
+  a.force_stride_bytes = 3 * sizeof(double);
+  a.scalar_type = FRAGSIM_SCALAR_DOUBLE;
+  return a;
 }
 
 FRAGSIM_API fragsim_status fragsim_controller_create(const fragsim_controller_def* def,
@@ -209,7 +235,11 @@ FRAGSIM_API fragsim_status fragsim_controller_reserve(fragsim_controller_id cont
   Controller* c = find_controller(controller);
   if (c == nullptr) return FRAGSIM_ERROR_STALE_ID;
   if (fragment_count < 0 || fragment_count > kMaxFragments) {
-    c->set_error("fragment_count: must be in [0, FRAGSIM_MAX_FRAGMENTS]");
+    char why[96];
+    std::snprintf(why, sizeof why,
+                  "fragment_count = %d: must be in [0, FRAGSIM_MAX_FRAGMENTS = %d]",
+                  static_cast<int>(fragment_count), kMaxFragments);
+    c->set_error(why);
     return FRAGSIM_ERROR_INVALID_ARGUMENT;
   }
   try {
@@ -258,78 +288,71 @@ FRAGSIM_API fragsim_status fragsim_controller_set_cameras(fragsim_controller_id 
 
 FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller_id controller,
                                                    const fragsim_step_input* input,
-                                                   fragsim_vec3* forces_N,
+                                                   const fragsim_fragment* fragments,
+                                                   int32_t fragment_count, fragsim_vec3* forces_N,
                                                    fragsim_step_stats* stats) {
   if (stats != nullptr) *stats = {};
-  const bool count_ok =
-      input != nullptr && input->fragment_count >= 0 && input->fragment_count <= kMaxFragments;
+  const bool count_ok = fragment_count >= 0 && fragment_count <= kMaxFragments;
   const StructSink sink{forces_N};
   Controller* c = find_controller(controller);
   auto refuse = [&](fragsim_status s, const char* why) {
-    if (count_ok) sink.zero(static_cast<std::size_t>(input->fragment_count));
+    if (count_ok) sink.zero(static_cast<std::size_t>(fragment_count));
     if (c != nullptr) c->set_error(why);
     return s;
   };
   if (c == nullptr) return refuse(FRAGSIM_ERROR_STALE_ID, kStaleMessage);
+  if (!count_ok) return refuse(FRAGSIM_ERROR_INVALID_ARGUMENT, count_rule(fragment_count).text);
   if (input == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "input: NULL");
-  if (!count_ok) {
-    char why[96];
-    std::snprintf(why, sizeof why, "fragment_count = %d: must be in [0, %d]",
-                  static_cast<int>(input->fragment_count), kMaxFragments);
-    c->set_error(why);
-    return FRAGSIM_ERROR_INVALID_ARGUMENT;
-  }
-  const auto n = static_cast<std::size_t>(input->fragment_count);
-  if (n > 0 && input->fragments == nullptr) {
+  const auto n = static_cast<std::size_t>(fragment_count);
+  if (n > 0 && fragments == nullptr) {
     return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "fragments: NULL with fragment_count > 0");
   }
   if (n > 0 && forces_N == nullptr) {
     return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "forces_N: NULL with fragment_count > 0");
   }
-  return guarded_step(*c, *input, StructSource{input->fragments}, n, sink, stats);
+  return guarded_step(*c, *input, StructSource{fragments}, n, sink, stats);
 }
 
 FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id controller,
                                                           const fragsim_step_input* input,
                                                           const fragsim_fragment_arrays* arrays,
-                                                          int32_t count,
+                                                          int32_t fragment_count,
                                                           fragsim_step_stats* stats) {
   if (stats != nullptr) *stats = {};
   // Zeros go to the force buffer only where its size is known: a valid count, scalar_type and
   // (count > 1) force stride.
-  const bool count_ok = count >= 0 && count <= kMaxFragments &&
-                        (arrays == nullptr || fragsim::control::force_layout_known(
-                                                  *arrays, static_cast<std::size_t>(count)));
+  const bool count_ok =
+      fragment_count >= 0 && fragment_count <= kMaxFragments &&
+      (arrays == nullptr ||
+       fragsim::control::force_layout_known(*arrays, static_cast<std::size_t>(fragment_count)));
   const ArraySink sink{arrays != nullptr ? arrays->force_N : nullptr,
                        arrays != nullptr ? arrays->force_stride_bytes : 0,
                        arrays != nullptr && raw(arrays->scalar_type) == FRAGSIM_SCALAR_FLOAT};
   Controller* c = find_controller(controller);
   auto refuse = [&](fragsim_status s, const char* why) {
-    if (count_ok) sink.zero(static_cast<std::size_t>(count));
+    if (count_ok) sink.zero(static_cast<std::size_t>(fragment_count));
     if (c != nullptr) c->set_error(why);
     return s;
   };
   if (c == nullptr) return refuse(FRAGSIM_ERROR_STALE_ID, kStaleMessage);
+  if (fragment_count < 0 || fragment_count > kMaxFragments) {
+    return refuse(FRAGSIM_ERROR_INVALID_ARGUMENT, count_rule(fragment_count).text);
+  }
   if (input == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "input: NULL");
   if (arrays == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, "arrays: NULL");
-  if (count < 0 || count > kMaxFragments) {
-    char why[96];
-    std::snprintf(why, sizeof why, "count = %d: must be in [0, %d]", static_cast<int>(count),
-                  kMaxFragments);
-    c->set_error(why);
-    return FRAGSIM_ERROR_INVALID_ARGUMENT;
-  }
-  const auto n = static_cast<std::size_t>(count);
+  const auto n = static_cast<std::size_t>(fragment_count);
   if (Failure f = fragsim::control::validate_arrays(*arrays, n)) {
     return refuse(f.status, f.message);
   }
   if (n > 0) {
     const void* required[6] = {arrays->position_m, arrays->velocity_mps, arrays->radius_m,
                                arrays->mass_kg,    arrays->id,           arrays->force_N};
-    const char* names[6] = {
-        "arrays.position_m: NULL with count > 0", "arrays.velocity_mps: NULL with count > 0",
-        "arrays.radius_m: NULL with count > 0",   "arrays.mass_kg: NULL with count > 0",
-        "arrays.id: NULL with count > 0",         "arrays.force_N: NULL with count > 0"};
+    const char* names[6] = {"arrays.position_m: NULL with fragment_count > 0",
+                            "arrays.velocity_mps: NULL with fragment_count > 0",
+                            "arrays.radius_m: NULL with fragment_count > 0",
+                            "arrays.mass_kg: NULL with fragment_count > 0",
+                            "arrays.id: NULL with fragment_count > 0",
+                            "arrays.force_N: NULL with fragment_count > 0"};
     for (int k = 0; k < 6; ++k) {
       if (required[k] == nullptr) return refuse(FRAGSIM_ERROR_NULL_ARGUMENT, names[k]);
     }

@@ -80,6 +80,7 @@ CameraSlot Controller::make_slot() {
       break;
     }
   }
+  slot.strategy->set_worker_count(def_.worker_count);
   slot.strategy->reset(0);
   if (room_ > 0) {
     slot.strategy->reserve(static_cast<int>(room_));
@@ -88,7 +89,8 @@ CameraSlot Controller::make_slot() {
   return slot;
 }
 
-Controller::Controller(const fragsim_controller_def& def) : hook_(def), def_(def) {
+Controller::Controller(const fragsim_controller_def& def) : hook_(def), def_(def), tasks_(def) {
+  if (def.enqueue_task != nullptr) parallel_ = &tasks_;
   // The occlusion bound allocates inside its step, after changing its state.
   undo_safe_ = !(raw(def.strategy) == FRAGSIM_STRATEGY_EDGE_MIN && def.edge_min.cover_max < 1.0);
   slots_.reserve(FRAGSIM_MAX_CAMERAS);
@@ -147,36 +149,48 @@ fragsim_status Controller::failed(const Failure& f) {
   return f.status;
 }
 
-void Controller::warn_once(std::uint32_t warnings, const fragsim_camera& c) {
+void Controller::warn_once(std::uint32_t warnings, const fragsim_camera_def& c,
+                           const fragsim_camera_pose& p) {
   const std::uint32_t fresh = warnings & ~warned_;
   warned_ |= warnings;
 #ifdef NDEBUG
   (void)fresh;
   (void)c;
+  (void)p;
 #else
   // Debug builds only: a message a developer sees at once, once per kind and controller.
   if (fresh & FRAGSIM_WARNING_CAMERA_OVER_SPEED) {
     std::fprintf(stderr,
                  "fragsim_control: warning: the camera moves faster than its max_speed_mps = %g "
                  "(velocity_mps = %g %g %g): the robust camera models promise nothing then\n",
-                 c.max_speed_mps, c.velocity_mps.x, c.velocity_mps.y, c.velocity_mps.z);
+                 c.max_speed_mps, p.velocity_mps.x, p.velocity_mps.y, p.velocity_mps.z);
   }
   if (fresh & FRAGSIM_WARNING_FOVY_IN_RADIANS) {
     std::fprintf(
         stderr, "fragsim_control: warning: camera.fovy_deg = %g: degrees are expected (radians?)\n",
         c.fovy_deg);
   }
-  if (fresh & FRAGSIM_WARNING_TURN_IN_DEGREES) {
+  if (fresh & FRAGSIM_WARNING_BELOW_GROUND) {
     std::fprintf(stderr,
-                 "fragsim_control: warning: camera.max_turn_radps = %g: radians per second are "
-                 "expected (degrees?)\n",
-                 c.max_turn_radps);
+                 "fragsim_control: warning: fragments below the ground plane: is ground_normal "
+                 "the engine's up axis (0, 0, 1 for z-up)?\n");
+  }
+  if (fresh & FRAGSIM_WARNING_UNPROTECTED) {
+    std::fprintf(stderr,
+                 "fragsim_control: warning: fragments that threaten a camera cannot be pushed "
+                 "(mass 0)\n");
+  }
+  if (fresh & FRAGSIM_WARNING_SKIPPED) {
+    std::fprintf(stderr,
+                 "fragsim_control: warning: fragments skipped for numbers that break "
+                 "fragsim_fragment's rules (stats.first_skipped)\n");
   }
 #endif
 }
 
-StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_camera& c,
-                                    const GroundFrame& frame, std::size_t m) const {
+StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_camera_def& c,
+                                    const fragsim_camera_pose& pose, const GroundFrame& frame,
+                                    std::size_t m) const {
   StepContext ctx;
   ctx.step = 0;
   ctx.t_s = in.time_s;
@@ -184,23 +198,24 @@ StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_
   // A game has no scene end: the look-ahead comes from the physics, capped by the def's
   // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
   ctx.end_time_s = in.end_time_s;
-  ctx.camera.eye_m = frame.in(vec(c.eye_m));
-  ctx.camera.right = frame.in(vec(c.right));
-  ctx.camera.up = frame.in(vec(c.up));
-  ctx.camera.forward = frame.in(vec(c.forward));
+  ctx.camera.eye_m = frame.in(vec(pose.eye_m));
+  ctx.camera.right = frame.in(vec(pose.right));
+  ctx.camera.up = frame.in(vec(pose.up));
+  ctx.camera.forward = frame.in(vec(pose.forward));
   ctx.camera.fovy_deg = c.fovy_deg;
   ctx.camera.aspect = c.aspect;
   ctx.camera.near_m = c.near_m;
   ctx.camera.far_m = c.far_m;
-  ctx.camera_velocity_mps = frame.in(vec(c.velocity_mps));
+  ctx.camera_velocity_mps = frame.in(vec(pose.velocity_mps));
   ctx.camera_max_speed_mps = c.max_speed_mps;
   // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound: passed on as it is.
   ctx.camera_max_accel_mps2 = c.max_accel_mps2;
-  ctx.camera_max_turn_radps = c.max_turn_radps;
+  ctx.camera_max_turn_degps = c.max_turn_degps;
   ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes: not rotated
   ctx.gravity_mps2 = frame.in(vec(in.gravity_mps2));
   ctx.ground_height_m = in.ground_height_m;
   ctx.fragments = std::span<const FragmentState>(states_.data(), m);
+  ctx.parallel = parallel_;
   return ctx;
 }
 
@@ -216,23 +231,20 @@ template <class Source, class Sink>
 fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
                                 const Sink& sink, fragsim_step_stats* stats) {
   // Phase 1: checks and room. Nothing here changes the controller's state.
-  if (Failure f = validate_step_input(in)) return failed(f);
-  if (in.camera_count > 0 && in.camera_count != camera_count_) {
+  if (camera_count_ == 0) {
+    return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                       "cameras: none set: call fragsim_controller_set_cameras before the first "
+                       "step"));
+  }
+  // The count before the poses: a wrong count would have the poses read past the caller's array.
+  if (in.camera_count != camera_count_) {
     return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
                        "camera_count = %d: the controller has %d camera(s) set "
                        "(fragsim_controller_set_cameras)",
                        static_cast<int>(in.camera_count), camera_count_));
   }
-  const int cameras = in.camera_count > 0 ? in.camera_count : 1;
-  std::array<fragsim_camera, FRAGSIM_MAX_CAMERAS> whole;
-  if (in.camera_count == 0) {
-    whole[0] = in.camera;
-  } else {
-    for (int j = 0; j < cameras; ++j) {
-      const auto k = static_cast<std::size_t>(j);
-      whole[k] = whole_camera(slots_[k].def, in.camera_poses[j]);
-    }
-  }
+  if (Failure f = validate_step_input(in)) return failed(f);
+  const int cameras = in.camera_count;
   // The id table this step fills grows below, only if it must (a table grown here for nothing
   // would cost the first call its page faults).
   reserve_work(n);
@@ -244,6 +256,8 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   std::size_t m = 0;
   int skipped = 0;
   int first_skipped = -1;
+  int below_ground = 0;
+  int first_below_ground = -1;
   FragmentIn f;
   for (std::size_t i = 0; i < n; ++i) {
     src.read(i, f);
@@ -257,6 +271,11 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     s.radius_m = f.radius_m;
     s.mass_kg = f.mass_kg;
     s.touched = src.touched(i);
+    // In the strategies' frame y is the height along the ground's normal. Wholly beneath it: an
+    // engine's contacts let a landing body sink a little, never by its whole size.
+    if (s.position_m.y() + s.radius_m < in.ground_height_m && below_ground++ == 0) {
+      first_below_ground = static_cast<int>(i);
+    }
     caller_index_[m] = static_cast<std::int32_t>(i);
     ids_now_[m] = src.id(i);
     ++m;
@@ -297,13 +316,14 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   std::array<const StepOutput*, FRAGSIM_MAX_CAMERAS> outs{};
   for (int j = 0; j < cameras; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    contexts[k] = context_for(in, whole[k], frame, m);
+    contexts[k] = context_for(in, slots_[k].def, in.camera_poses[j], frame, m);
     outs[k] = &slots_[k].out;
   }
 
   // Phase 2: the strategies, in the room made above.
   const std::span<const int> previous(previous_.data(), m);
   JointPush::Conflicts conflicts;
+  tasks_.begin_step();
   try {
     for (int j = 0; j < cameras; ++j) {
       CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
@@ -341,6 +361,14 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     return FRAGSIM_ERROR_OUT_OF_MEMORY;
   }
 
+  if (parallel_ != nullptr && tasks_.broken()) {
+    // The strategies' answer is incomplete and their state may hold parts of it.
+    reset();
+    set_error(
+        "enqueue_task ran a range on a worker_index not below worker_count, or did not run every "
+        "item exactly once: every fragment was forgotten, as after fragsim_controller_reset");
+    return FRAGSIM_ERROR_INVALID_ARGUMENT;
+  }
   // Never a non-finite force out, whatever happened inside (the strategies already drop them).
   for (const AppliedForce& a : out_.forces) {
     if (!a.force_N.allFinite() || a.fragment < 0 || static_cast<std::size_t>(a.fragment) >= m) {
@@ -369,10 +397,13 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   has_normal_ = true;
   last_cameras_ = cameras;
   std::uint32_t warnings = 0;
+  if (below_ground > 0) warnings |= FRAGSIM_WARNING_BELOW_GROUND;
+  if (unprotected > 0) warnings |= FRAGSIM_WARNING_UNPROTECTED;
+  if (skipped > 0) warnings |= FRAGSIM_WARNING_SKIPPED;
   for (int j = 0; j < cameras; ++j) {
-    const fragsim_camera& c = whole[static_cast<std::size_t>(j)];
-    const std::uint32_t w = camera_warnings(c);
-    if (w != 0) warn_once(w, c);
+    const fragsim_camera_def& c = slots_[static_cast<std::size_t>(j)].def;
+    const std::uint32_t w = camera_warnings(c, in.camera_poses[j]) | warnings;
+    if (w != 0) warn_once(w, c, in.camera_poses[j]);
     warnings |= w;
   }
   if (stats != nullptr) {
@@ -387,6 +418,8 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     stats->skipped = skipped;
     stats->first_skipped = first_skipped;
     stats->unprotected = unprotected;
+    stats->below_ground = below_ground;
+    stats->first_below_ground = first_below_ground;
     stats->warnings = warnings;
     stats->conflicts = conflicts.count;
     stats->first_conflict =

@@ -14,11 +14,14 @@
 // (GroundFrame); the state they keep per fragment lives in that frame, so a step with another
 // normal than the last successful one forgets every fragment first.
 //
-// Several cameras (since 0.7): one strategy per camera, each with its own state, run as for one
-// camera; their pushes on a fragment are then joined (JointPush in joint_push.hpp), edge-min's by
-// rounds of probes that ask each camera for its least extra push on the pushed path. A step with
-// another camera count than the last successful one forgets every fragment first, like a new
-// normal: the strategies of the cameras added have no state for them.
+// Cameras: one strategy per camera, each with its own state, run as for one camera; with several,
+// their pushes on a fragment are then joined (JointPush in joint_push.hpp), edge-min's by rounds
+// of probes that ask each camera for its least extra push on the pushed path. A step with another
+// camera count than the last successful one forgets every fragment first, like a new normal: the
+// strategies of the cameras added have no state for them.
+//
+// Workers: with the def's task system (TaskSystem) the strategies run their per-fragment work in
+// ranges on the game's workers; the answer is the same for any worker count.
 
 #include <cstdint>
 #include <memory>
@@ -29,6 +32,7 @@
 #include "api/id_table.hpp"
 #include "api/input_checks.hpp"
 #include "api/joint_push.hpp"
+#include "api/task_system.hpp"
 #include "fragsim/control.h"
 #include "geometry/fragment_state.hpp"
 #include "strategies/strategy.hpp"
@@ -75,7 +79,8 @@ class Controller {
   // changing nothing of the state.
   void reserve(std::size_t n);
   // The constants of `count` cameras (valid, in [1, FRAGSIM_MAX_CAMERAS]). May throw
-  // std::bad_alloc (a new camera's strategy), changing nothing.
+  // std::bad_alloc (a new camera's strategy), changing nothing. A controller has no camera
+  // before the first call.
   void set_cameras(const fragsim_camera_def* cameras, int count);
 
   // One step over n fragments read from `source`, forces written to `sink` (zeros on failure are
@@ -103,19 +108,24 @@ class Controller {
   fragsim_status failed(const Failure& f);
   // reserve() but for the id tables.
   void reserve_work(std::size_t n);
-  void warn_once(std::uint32_t warnings, const fragsim_camera& camera);
-  // The cameras of this step, whole, in the strategies' frame.
-  StepContext context_for(const fragsim_step_input& in, const fragsim_camera& camera,
-                          const GroundFrame& frame, std::size_t m) const;
+  void warn_once(std::uint32_t warnings, const fragsim_camera_def& camera,
+                 const fragsim_camera_pose& pose);
+  // One camera of this step, its constants and pose, in the strategies' frame.
+  StepContext context_for(const fragsim_step_input& in, const fragsim_camera_def& camera,
+                          const fragsim_camera_pose& pose, const GroundFrame& frame,
+                          std::size_t m) const;
   void undo_carry_over(int cameras);
 
   HookResource hook_;  // first: everything below is allocated from it
   std::pmr::memory_resource* mem_ = &hook_;
   fragsim_controller_def def_;
+  // The game's workers, when the def gives a task system.
+  TaskSystem tasks_;
+  const ParallelFor* parallel_ = nullptr;
   // slots_[0] always; more from set_cameras (room for FRAGSIM_MAX_CAMERAS made at creation, so
   // the slots never move).
   std::pmr::vector<CameraSlot> slots_{mem_};
-  int camera_count_ = 0;   // cameras set by set_cameras (0: none)
+  int camera_count_ = 0;   // cameras set by set_cameras (0: none yet, and a step is refused)
   int last_cameras_ = 1;   // cameras of the last successful step
   JointPush joint_{mem_};  // several cameras' pushes joined
   bool undo_safe_ = true;  // a failure inside the strategy's step changed nothing

@@ -61,6 +61,7 @@ fragsim_controller_def controller_def(fragsim_strategy strategy, const EdgeMinPa
   d.deflect_all.accel_mps2 = da.accel_mps2;
   d.deflect_all.range_m = da.range_m;
   d.horizon_cap_s = strategy == FRAGSIM_STRATEGY_EDGE ? e.horizon_cap_s : em.horizon_cap_s;
+  d.worker_count = 1;  // the calling thread; no task system
   d.internal_value = kDefCookie;
   return d;
 }

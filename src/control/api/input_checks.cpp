@@ -1,16 +1,17 @@
 #include "api/input_checks.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <limits>
-#include <optional>
-#include <string>
+#include <span>
 
 #include "api/def_mapping.hpp"
-#include "strategies/deflect_all_strategy.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
+#include "strategies/deflect_all_params.hpp"
+#include "strategies/edge_min_params.hpp"
+#include "strategies/edge_params.hpp"
+#include "strategies/param_range.hpp"
 
 namespace fragsim::control {
 
@@ -29,7 +30,10 @@ namespace {
 constexpr double kFrameTolerance = 1e-6;
 // Beyond these a legal number is more likely a unit mix-up (fragsim_step_stats.warnings).
 constexpr double kFovyLikelyRadians_deg = 5.0;
-constexpr double kTurnLikelyDegrees_radps = 60.0;
+// Beyond these a screen's shape costs the occlusion bound's grid more than it can bound (its rows
+// grow as 1 / aspect), and no display is that narrow or that wide.
+constexpr double kMinAspect = 1e-3;
+constexpr double kMaxAspect = 1e3;
 
 // Rules for numbers, each with the words of the message.
 bool finite(double v) {
@@ -63,22 +67,64 @@ Failure check_vec(const fragsim_vec3& v, const char* name, bool (*rule)(double),
   return {};
 }
 
-// A def field that is one of the strategies' parameters, checked by that parameter's own key (the
-// range a scene file's value must keep) and named by its C field. The fields are listed here,
-// not taken from the keys, because the C names differ (edge.k_Nms2, one horizon_cap_s for both
-// strategies) and the C struct cannot be reflected on.
-template <class Params>
-Failure check_key(const fragsim::ParamSpec<Params>& spec, const char* key, const Params& p,
-                  const char* field) {
-  for (const fragsim::settings::Key<Params>& k : spec.keys) {
-    if (k.name != key) continue;
-    if (const std::optional<std::string> rule = k.broken(p)) {
-      return fail(FRAGSIM_ERROR_INVALID_ARGUMENT, "%s = %s: %s", field, k.format(p).c_str(),
-                  rule->c_str());
+// The words of a parameter's range, as a message ends: "must be in (0, 3600]", "must be a whole
+// number in [0, 100000000]", "must be in [0, 1e+06], or INFINITY".
+struct RangeWords {
+  char text[128];
+  explicit RangeWords(const fragsim::ParamRange& r) {
+    const char* number = r.whole ? "%.17g" : "%g";
+    char lo[32];
+    char hi[32];
+    std::snprintf(lo, sizeof lo, number, r.lo);
+    std::snprintf(hi, sizeof hi, number, r.hi);
+    const char* inf = r.inf_ok ? ", or INFINITY" : "";
+    if (std::isinf(r.hi)) {
+      std::snprintf(text, sizeof text, "must be %s %s%s", r.lo_open ? ">" : ">=", lo, inf);
+    } else if (std::isinf(r.lo)) {
+      std::snprintf(text, sizeof text, "must be %s %s%s", r.hi_open ? "<" : "<=", hi, inf);
+    } else {
+      std::snprintf(text, sizeof text, "must be %sin %c%s, %s%c%s",
+                    r.whole ? "a whole number " : "", r.lo_open ? '(' : '[', lo, hi,
+                    r.hi_open ? ')' : ']', inf);
     }
-    return {};
   }
-  return fail(FRAGSIM_ERROR_INTERNAL, "internal: %s has no key %s", field, key);
+};
+
+// The range of the parameter `name` (strategies/*_params.hpp), one the def has a field for.
+const fragsim::ParamRange* def_range(std::span<const fragsim::ParamRange> ranges,
+                                     const char* name) {
+  const fragsim::ParamRange* r = fragsim::find_range(ranges, name);
+  return r != nullptr && r->field != nullptr ? r : nullptr;
+}
+
+// A def field that is one of the strategies' parameters, checked against that parameter's range
+// (the one a scene file's value must keep: the tool's keys take theirs from the same table) and
+// named by its C field (edge.k_Nms2; one horizon_cap_s for both strategies). The value is printed
+// with 15 digits, which give back any number typed with 15 or fewer (1000001, not 1e+06).
+Failure check_param(std::span<const fragsim::ParamRange> ranges, const char* name, double value) {
+  const fragsim::ParamRange* r = def_range(ranges, name);
+  if (r == nullptr) return fail(FRAGSIM_ERROR_INTERNAL, "internal: the def has no field %s", name);
+  if (r->admits(value)) return {};
+  return fail(FRAGSIM_ERROR_INVALID_ARGUMENT, "%s = %.15g: %s", r->field, value,
+              RangeWords(*r).text);
+}
+
+// edge_min.edge_weights: each weight in its range, and not all four zero.
+Failure check_edge_weights(const std::array<double, 4>& w) {
+  const fragsim::ParamRange* r = def_range(fragsim::kEdgeMinRanges, "edge_weights");
+  if (r == nullptr) return fail(FRAGSIM_ERROR_INTERNAL, "internal: the def has no edge weights");
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    if (!r->admits(w[k])) {
+      return fail(FRAGSIM_ERROR_INVALID_ARGUMENT, "%s[%zu] = %.15g: %s", r->field, k, w[k],
+                  RangeWords(*r).text);
+    }
+  }
+  if (!fragsim::some_edge_allowed(w)) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "%s = {%g, %g, %g, %g}: at least one weight must be > 0", r->field, w[0], w[1],
+                w[2], w[3]);
+  }
+  return {};
 }
 
 }  // namespace
@@ -95,38 +141,50 @@ Failure validate_def(const fragsim_controller_def& def) {
                 def.alloc_fn == nullptr ? "alloc_fn" : "free_fn",
                 def.alloc_fn == nullptr ? "free_fn" : "alloc_fn");
   }
+  if ((def.enqueue_task == nullptr) != (def.finish_task == nullptr)) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "%s: NULL while %s is set: give both (the game's task system) or neither (the "
+                "calling thread)",
+                def.enqueue_task == nullptr ? "enqueue_task" : "finish_task",
+                def.enqueue_task == nullptr ? "finish_task" : "enqueue_task");
+  }
+  if (def.worker_count < 1 || def.worker_count > FRAGSIM_MAX_WORKERS) {
+    return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
+                "worker_count = %d: must be in [1, FRAGSIM_MAX_WORKERS = %d]",
+                static_cast<int>(def.worker_count), FRAGSIM_MAX_WORKERS);
+  }
   Failure f;
   // The shared fields first, whichever strategy is chosen: a def is valid as a whole.
-  const auto& em_keys = fragsim::edge_min_param_spec();
+  const auto& em_ranges = fragsim::kEdgeMinRanges;
   const fragsim::EdgeMinParams em = edge_min_params(def);
-  if ((f = check_key(em_keys, "max_solves", em, "edge_min.max_solves")) ||
-      (f = check_key(em_keys, "horizon_cap_s", em, "horizon_cap_s"))) {
+  if ((f = check_param(em_ranges, "max_solves", em.max_solves)) ||
+      (f = check_param(em_ranges, "horizon_cap_s", em.horizon_cap_s))) {
     return f;
   }
   switch (raw(def.strategy)) {
     case FRAGSIM_STRATEGY_EDGE_MIN: {
       const fragsim_edge_min_def& p = def.edge_min;
-      if ((f = check_key(em_keys, "margin_m", em, "edge_min.margin_m")) ||
-          (f = check_key(em_keys, "a_max_mps2", em, "edge_min.a_max_mps2")) ||
+      if ((f = check_param(em_ranges, "margin_m", em.margin_m)) ||
+          (f = check_param(em_ranges, "a_max_mps2", em.a_max_mps2)) ||
           (f = check(raw(p.camera_model) >= FRAGSIM_CAMERA_CONSTANT &&
                          raw(p.camera_model) <= FRAGSIM_CAMERA_REACHABLE,
                      "edge_min.camera_model", raw(p.camera_model),
                      "must be a fragsim_camera_model")) ||
-          (f = check_key(em_keys, "camera_accel_mps2", em, "edge_min.camera_accel_mps2")) ||
-          (f = check_key(em_keys, "camera_turn_degps", em, "edge_min.camera_turn_degps")) ||
-          (f = check_key(em_keys, "edge_weights", em, "edge_min.edge_weights")) ||
-          (f = check_key(em_keys, "cover_max", em, "edge_min.cover_max")) ||
-          (f = check_key(em_keys, "cover_region", em, "edge_min.cover_region"))) {
+          (f = check_param(em_ranges, "camera_accel_mps2", em.camera_accel_mps2)) ||
+          (f = check_param(em_ranges, "camera_turn_degps", em.camera_turn_degps)) ||
+          (f = check_edge_weights(em.edge_weights)) ||
+          (f = check_param(em_ranges, "cover_max", em.cover_max)) ||
+          (f = check_param(em_ranges, "cover_region", em.cover_region))) {
         return f;
       }
       return {};
     }
     case FRAGSIM_STRATEGY_EDGE: {
       const fragsim_edge_def& p = def.edge;
-      const auto& keys = fragsim::edge_param_spec();
+      const auto& ranges = fragsim::kEdgeRanges;
       const fragsim::EdgeParams e = edge_params(def);
-      if ((f = check_key(keys, "k", e, "edge.k_Nms2")) ||
-          (f = check_key(keys, "a_max_mps2", e, "edge.a_max_mps2")) ||
+      if ((f = check_param(ranges, "k", e.k)) ||
+          (f = check_param(ranges, "a_max_mps2", e.a_max_mps2)) ||
           (f = check(raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_THESIS ||
                          raw(p.predictor) == FRAGSIM_EDGE_PREDICTOR_DISCRETE,
                      "edge.predictor", raw(p.predictor), "must be a fragsim_edge_predictor")) ||
@@ -144,10 +202,10 @@ Failure validate_def(const fragsim_controller_def& def) {
       return {};
     }
     case FRAGSIM_STRATEGY_DEFLECT_ALL: {
-      const auto& keys = fragsim::deflect_all_param_spec();
+      const auto& ranges = fragsim::kDeflectAllRanges;
       const fragsim::DeflectAllParams d = deflect_all_params(def);
-      if ((f = check_key(keys, "accel_mps2", d, "deflect_all.accel_mps2")) ||
-          (f = check_key(keys, "range_m", d, "deflect_all.range_m"))) {
+      if ((f = check_param(ranges, "accel_mps2", d.accel_mps2)) ||
+          (f = check_param(ranges, "range_m", d.range_m))) {
         return f;
       }
       return {};
@@ -226,8 +284,8 @@ Failure validate_camera_def(const fragsim_camera_def& c, const char* prefix) {
   Failure f;
   if ((f = check(finite(c.fovy_deg) && c.fovy_deg > 0.0 && c.fovy_deg < 180.0,
                  FieldName(prefix, "fovy_deg").text, c.fovy_deg, "must be in (0, 180)")) ||
-      (f = check(positive(c.aspect), FieldName(prefix, "aspect").text, c.aspect,
-                 "must be finite and > 0")) ||
+      (f = check(c.aspect >= kMinAspect && c.aspect <= kMaxAspect, FieldName(prefix, "aspect").text,
+                 c.aspect, "must be in [1e-3, 1e3]")) ||
       (f = check(positive(c.near_m), near_m.text, c.near_m, "must be finite and > 0")) ||
       (f = check(finite(c.far_m) && c.far_m > c.near_m, FieldName(prefix, "far_m").text, c.far_m,
                  far_rule)) ||
@@ -237,8 +295,8 @@ Failure validate_camera_def(const fragsim_camera_def& c, const char* prefix) {
                  c.max_speed_mps, "must be finite and >= 0")) ||
       (f = check(bound(c.max_accel_mps2), FieldName(prefix, "max_accel_mps2").text,
                  c.max_accel_mps2, "must be >= 0, INFINITY or FRAGSIM_UNDECLARED")) ||
-      (f = check(bound(c.max_turn_radps), FieldName(prefix, "max_turn_radps").text,
-                 c.max_turn_radps, "must be >= 0, INFINITY or FRAGSIM_UNDECLARED"))) {
+      (f = check(bound(c.max_turn_degps), FieldName(prefix, "max_turn_degps").text,
+                 c.max_turn_degps, "must be >= 0, INFINITY or FRAGSIM_UNDECLARED"))) {
     return f;
   }
   return {};
@@ -267,17 +325,10 @@ Failure validate_step_input(const fragsim_step_input& in) {
       (f = validate_ground_normal(in.ground_normal))) {
     return f;
   }
-  if (in.camera_count == 0) {
-    if ((f = validate_camera_pose(pose_of(in.camera), "camera")) ||
-        (f = validate_camera_def(def_of(in.camera), "camera"))) {
-      return f;
-    }
-    return {};
-  }
-  if (in.camera_count < 0 || in.camera_count > FRAGSIM_MAX_CAMERAS) {
+  if (in.camera_count < 1 || in.camera_count > FRAGSIM_MAX_CAMERAS) {
     return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
-                "camera_count = %d: must be 0 (input.camera) or the controller's cameras, at most "
-                "FRAGSIM_MAX_CAMERAS = %d",
+                "camera_count = %d: must be the number of cameras set with "
+                "fragsim_controller_set_cameras, in [1, FRAGSIM_MAX_CAMERAS = %d]",
                 static_cast<int>(in.camera_count), FRAGSIM_MAX_CAMERAS);
   }
   if (in.camera_poses == nullptr) {
@@ -343,22 +394,23 @@ Failure validate_arrays(const fragsim_fragment_arrays& a, std::size_t count) {
   return {};
 }
 
-bool fragment_usable(const double* p, const double* v, double r, double m) {
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(v[0]) &&
-         std::isfinite(v[1]) && std::isfinite(v[2]) && nonnegative(r) && nonnegative(m);
+bool mass_usable(double m) {
+  return m == 0.0 || (m >= FRAGSIM_MIN_MASS_KG && m <= FRAGSIM_MAX_MASS_KG);
 }
 
-std::uint32_t camera_warnings(const fragsim_camera& c) {
+bool fragment_usable(const double* p, const double* v, double r, double m) {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) && std::isfinite(v[0]) &&
+         std::isfinite(v[1]) && std::isfinite(v[2]) && nonnegative(r) && mass_usable(m);
+}
+
+std::uint32_t camera_warnings(const fragsim_camera_def& c, const fragsim_camera_pose& p) {
   std::uint32_t w = 0;
   const double speed_mps =
-      std::sqrt(c.velocity_mps.x * c.velocity_mps.x + c.velocity_mps.y * c.velocity_mps.y +
-                c.velocity_mps.z * c.velocity_mps.z);
+      std::sqrt(p.velocity_mps.x * p.velocity_mps.x + p.velocity_mps.y * p.velocity_mps.y +
+                p.velocity_mps.z * p.velocity_mps.z);
   // A hair of slack: a camera clamped to exactly V_c must not trip it by rounding.
   if (speed_mps > c.max_speed_mps * (1.0 + 1e-9) + 1e-12) w |= FRAGSIM_WARNING_CAMERA_OVER_SPEED;
   if (c.fovy_deg < kFovyLikelyRadians_deg) w |= FRAGSIM_WARNING_FOVY_IN_RADIANS;
-  if (std::isfinite(c.max_turn_radps) && c.max_turn_radps > kTurnLikelyDegrees_radps) {
-    w |= FRAGSIM_WARNING_TURN_IN_DEGREES;
-  }
   return w;
 }
 

@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "api/camera_parts.hpp"
 #include "fragsim/control.h"
 
 namespace fragsim::control {
@@ -23,8 +22,8 @@ struct Failure {
 [[gnu::format(printf, 2, 3)]] Failure fail(fragsim_status status, const char* format, ...);
 
 Failure validate_def(const fragsim_controller_def& def);
-// The step's input; with camera_count > 0 its count (in range, not yet against the controller's)
-// and each pose.
+// The step's input: its numbers, its camera count (in range; the controller checks it against the
+// cameras it has) and each pose.
 Failure validate_step_input(const fragsim_step_input& in);
 // One camera's constants and one pose, each failure naming prefix.field ("cameras[1].near_m").
 Failure validate_camera_def(const fragsim_camera_def& camera, const char* prefix);
@@ -36,12 +35,16 @@ Failure validate_arrays(const fragsim_fragment_arrays& arrays, std::size_t count
 // valid), so that a refused call may write count zeros to it.
 bool force_layout_known(const fragsim_fragment_arrays& arrays, std::size_t count);
 
+// Whether a mass keeps fragsim_fragment's rule: 0, or in [FRAGSIM_MIN_MASS_KG,
+// FRAGSIM_MAX_MASS_KG], where a force (mass times a capped acceleration) is finite and not
+// rounded to zero in a double or a float.
+bool mass_usable(double mass_kg);
 // Whether one fragment's numbers keep fragsim_fragment's rules: a finite position and velocity,
-// a finite radius and mass, both >= 0.
+// a finite radius >= 0 and a usable mass.
 bool fragment_usable(const double* position_m, const double* velocity_mps, double radius_m,
                      double mass_kg);
 
-// The FRAGSIM_WARNING_* bits the camera earns: legal input that looks like a unit mix-up.
-std::uint32_t camera_warnings(const fragsim_camera& camera);
+// The FRAGSIM_WARNING_* bits a posed camera earns: legal input that looks like a mistake.
+std::uint32_t camera_warnings(const fragsim_camera_def& camera, const fragsim_camera_pose& pose);
 
 }  // namespace fragsim::control

@@ -11,6 +11,7 @@
 #include "geometry/work_space.hpp"
 #include "strategies/lane_ops.hpp"
 #include "strategies/lanes.hpp"
+#include "strategies/parallel_ranges.hpp"
 
 namespace fragsim {
 namespace {
@@ -766,7 +767,7 @@ void second_tier_over(const FragmentState* f, const FirstTier& p, LazySecondTier
   }
 }
 
-// The rows of four the wide pass keeps of a group in doubt (TwoBoxClearance::kept_): the
+// The rows of four the wide pass keeps of a group in doubt (TwoBoxClearance::WorkSpace::kept): the
 // positions relative to the origin, the velocities, the radii and the intervals.
 constexpr std::size_t kKeptRows = 8;
 
@@ -1354,40 +1355,50 @@ void TwoBoxClearance::use_wide_lanes(bool wide) {
 #endif
 }
 
-// Only ever grown: nothing in them carries over from one run to the next, and a resize in each
-// run would write them whole on the first after reserve().
-void TwoBoxClearance::size_wide_work(std::size_t n) {
+// Only ever grown: nothing in them carries over from one pass to the next, and a resize in each
+// pass would write them whole on the first after reserve().
+void TwoBoxClearance::WorkSpace::size_for(std::size_t n) {
   const auto at_least = [](auto& v, std::size_t size) {
     if (v.size() < size) v.resize(size);
   };
-  at_least(kept_, kept_doubles(n));
-  at_least(verdicts_, n / 4 + 1);
-  at_least(piece_rows_, kPieceRows * piece_stride(n));
-  at_least(piece_lanes_, piece_stride(n));
+  at_least(doubt, n + 4);
+  at_least(groups, n / 4 + 1);
+  at_least(kept, kept_doubles(n));
+  at_least(verdicts, n / 4 + 1);
+  at_least(piece_rows, kPieceRows * piece_stride(n));
+  at_least(piece_lanes, piece_stride(n));
+}
+
+void TwoBoxClearance::WorkSpace::reserve(std::size_t n) {
+  reserve_touched(doubt, n + 4);
+  reserve_touched(groups, n / 4 + 1);
+  size_for(n);
 }
 
 void TwoBoxClearance::reserve(std::size_t n) {
   reserve_touched(clears_, n);
   reserve_touched(grown_clears_, n);
-  reserve_touched(doubt_, n + 4);
-  reserve_touched(groups_, n / 4 + 1);
-  size_wide_work(n);
+  whole_.reserve(n);
   reserve_touched(unsettled_, n);
+  // Kept at its largest size, as the flags are: reserve() runs before every controller step.
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  if (chunks_.size() < chunks) chunks_.resize(chunks);
 }
 
-void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes) {
-  const std::size_t n = fragments.size();
-  size_ = n;
-  clears_.assign(n, 1);
-  grown_clears_.assign(n, 1);
-  doubt_.resize(n + 4);
-  groups_.resize(n / 4 + 1);
-  size_wide_work(n);
-  unsettled_.resize(n);
-  unsettled_count_ = 0;
-  doubts_ = 0;
-  max_radius_m_ = 0.0;
-  if (n == 0) return;
+void TwoBoxClearance::set_workers(int workers) {
+  const auto wanted = static_cast<std::size_t>(std::max(workers, 1));
+  workers_.reserve(wanted);
+  while (workers_.size() < wanted) {
+    workers_.emplace_back(mem_);
+    workers_.back().reserve(static_cast<std::size_t>(kChunk));
+    workers_.back().unsettled.resize(static_cast<std::size_t>(kChunk));
+  }
+}
+
+namespace {
+
+// Everything the first tier needs for a run's boxes.
+FirstTier first_tier_constants(const TwoBoxClearance::Boxes& boxes) {
   const BoxFrame& frame = boxes.frame;
   const Eigen::Vector3d grown_lo = boxes.lo_m - boxes.grow_lo_m;
   const Eigen::Vector3d grown_hi = boxes.hi_m + boxes.grow_hi_m;
@@ -1405,39 +1416,108 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   p.horizon = horizon_bound(boxes.half_gy_mps2, boxes.cap_s, boxes.floor_s);
   p.ground = boxes.ground_m;
   p.window = boxes.window_s;
+  return p;
+}
 
+// Both tiers over fragments [0, n) of f (n > 0), in work space w: the first tier over every
+// fragment, the second over those it leaves in doubt. The second tier tests the box in the
+// frame's axes, each over the fragment's interval (the first tier's bound on it) and, for the
+// grown box, the window within it. The flags and the unsettled list go to `out`, indices from f;
+// the largest radius to r_max, the first tier's count of doubts to `doubts`.
+void both_tiers(const FragmentState* f, std::size_t n, const FirstTier& p,
+                const TwoBoxClearance::Boxes& boxes, [[maybe_unused]] bool wide,
+                TwoBoxClearance::WorkSpace& w, Answers& out, double* r_max, std::size_t* doubts) {
   // The second tier's constants, built at its first fragment: most steps, once the debris has
   // settled, the first tier leaves none.
   LazySecondTier q{&boxes, {}};
-  Answers out{clears_.data(), grown_clears_.data(), unsettled_.data(), 0};
-
-  // The first tier over every fragment, the second over those it leaves in doubt: the second tier
-  // tests the box in the frame's axes, each over the fragment's interval (the first tier's bound
-  // on it) and, for the grown box, the window within it.
-  std::int32_t* const doubt = doubt_.data();
-  std::size_t listed = 0;  // doubts listed in doubt_ for second_tier_over
+  std::int32_t* const doubt = w.doubt.data();
+  std::size_t listed = 0;  // doubts listed in `doubt` for second_tier_over
 #if defined(FRAGSIM_WIDE_LANES)
-  if (wide_) {
-    const FragmentState& f0 = fragments[0];
-    const bool packed = f0.velocity_mps.data() == f0.position_m.data() + 3;
-    void* kept = kept_.data();
+  if (wide) {
+    const bool packed = f[0].velocity_mps.data() == f[0].position_m.data() + 3;
+    void* kept = w.kept.data();
     std::size_t room = kept_doubles(n) * sizeof(double);
     std::align(32, room - 3 * sizeof(double), kept, room);
-    listed =
-        both_tiers_wide(fragments.data(), n, p, packed, q, out, groups_.data(), verdicts_.data(),
-                        static_cast<double*>(kept),
-                        PieceLanes{piece_rows_.data(), piece_stride(n), piece_lanes_.data(), 0},
-                        &keep_rows_, doubt, &max_radius_m_, &doubts_);
+    listed = both_tiers_wide(
+        f, n, p, packed, q, out, w.groups.data(), w.verdicts.data(), static_cast<double*>(kept),
+        PieceLanes{w.piece_rows.data(), piece_stride(n), w.piece_lanes.data(), 0}, &w.keep_rows,
+        doubt, r_max, doubts);
   } else {
-    listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
-    doubts_ = listed;
+    listed = first_tier_narrow(f, n, p, doubt, r_max);
+    *doubts = listed;
   }
 #else
-  listed = first_tier_narrow(fragments.data(), n, p, doubt, &max_radius_m_);
-  doubts_ = listed;
+  listed = first_tier_narrow(f, n, p, doubt, r_max);
+  *doubts = listed;
 #endif
-  second_tier_over(fragments.data(), p, q, doubt, listed, out);
+  second_tier_over(f, p, q, doubt, listed, out);
+}
+
+}  // namespace
+
+void TwoBoxClearance::start_run(std::size_t n) {
+  size_ = n;
+  clears_.assign(n, 1);
+  grown_clears_.assign(n, 1);
+  unsettled_.resize(n);
+  unsettled_count_ = 0;
+  doubts_ = 0;
+  max_radius_m_ = 0.0;
+}
+
+void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes) {
+  const std::size_t n = fragments.size();
+  start_run(n);
+  whole_.size_for(n);
+  if (n == 0) return;
+  const FirstTier p = first_tier_constants(boxes);
+  Answers out{clears_.data(), grown_clears_.data(), unsettled_.data(), 0};
+  both_tiers(fragments.data(), n, p, boxes, wide_, whole_, out, &max_radius_m_, &doubts_);
   unsettled_count_ = out.unsettled_count;
+}
+
+void TwoBoxClearance::join_chunks(std::size_t chunks) {
+  for (std::size_t c = 0; c < chunks; ++c) {
+    const ChunkResult& result = chunks_[c];
+    const auto from = unsettled_.begin() + static_cast<std::ptrdiff_t>(c * kChunk);
+    // Moved toward the front (never past its own start): std::copy's overlap is allowed so.
+    std::copy(from, from + static_cast<std::ptrdiff_t>(result.unsettled),
+              unsettled_.begin() + static_cast<std::ptrdiff_t>(unsettled_count_));
+    unsettled_count_ += result.unsettled;
+    doubts_ += result.doubts;
+    // The largest of the chunks' largest: the run's (max is exact, whatever the order).
+    max_radius_m_ = std::max(max_radius_m_, result.max_radius_m);
+  }
+}
+
+void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes& boxes,
+                          const ParallelFor* parallel) {
+  const std::size_t n = fragments.size();
+  start_run(n);
+  if (n == 0) return;
+  set_workers(parallel != nullptr ? parallel->worker_count() : 1);  // done once by the caller
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  if (chunks_.size() < chunks) chunks_.resize(chunks);  // done by reserve(n) before
+  const FirstTier p = first_tier_constants(boxes);
+  // Chunk c on a worker: its flags in place, its unsettled fragments to its own slice of the
+  // run's list (as indices over all the fragments), the rest to its own ChunkResult.
+  const auto run_chunks = [&](std::int32_t first, std::int32_t end, std::uint32_t worker) {
+    WorkSpace& w = workers_[worker];
+    for (auto c = static_cast<std::size_t>(first); c < static_cast<std::size_t>(end); ++c) {
+      const std::size_t begin = c * static_cast<std::size_t>(kChunk);
+      const std::size_t count = std::min(n - begin, static_cast<std::size_t>(kChunk));
+      Answers out{clears_.data() + begin, grown_clears_.data() + begin, w.unsettled.data(), 0};
+      ChunkResult& result = chunks_[c];
+      both_tiers(fragments.data() + begin, count, p, boxes, wide_, w, out, &result.max_radius_m,
+                 &result.doubts);
+      for (std::size_t k = 0; k < out.unsettled_count; ++k) {
+        unsettled_[begin + k] = w.unsettled[k] + static_cast<std::int32_t>(begin);
+      }
+      result.unsettled = out.unsettled_count;
+    }
+  };
+  for_ranges(parallel, static_cast<std::int32_t>(chunks), 1, run_chunks);
+  join_chunks(chunks);
 }
 
 }  // namespace fragsim

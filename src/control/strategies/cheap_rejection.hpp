@@ -19,6 +19,7 @@
 
 #include "geometry/fragment_state.hpp"
 #include "geometry/parabola.hpp"
+#include "strategies/parallel_for.hpp"
 
 namespace fragsim {
 
@@ -166,8 +167,22 @@ class TwoBoxClearance {
     std::array<Eigen::Vector3d, kMaxPieces> piece_grow_hi_m{};
   };
   void run(std::span<const FragmentState> fragments, const Boxes& boxes);
+  // The same answers, the fragments cut into chunks of kChunk that run in ranges on `parallel`'s
+  // workers (on the calling thread when it is nullptr). Each chunk writes its own fragments'
+  // flags and its own slice of the unsettled list, which are joined in chunk order afterwards:
+  // every fragment's answer is its own, whatever its neighbours (the lanes' tests promise it),
+  // and a chunk starts on a whole group of four, so each fragment even goes through the same
+  // lanes as in run(). Allocates nothing after reserve() and set_workers() for as many workers
+  // as `parallel` has; it grows the work spaces on the calling thread otherwise.
+  void run(std::span<const FragmentState> fragments, const Boxes& boxes,
+           const ParallelFor* parallel);
+  // Fragments per chunk: a whole number of groups of four, and enough that a chunk's start (its
+  // second tier's constants) costs little beside it.
+  static constexpr std::int32_t kChunk = 512;
   // Room for runs over up to n fragments: such a run allocates nothing.
   void reserve(std::size_t n);
+  // A work space for each of `workers` chunks running at once (the run with a ParallelFor).
+  void set_workers(int workers);
   // One flag per fragment: 1 when its path clears the protected box (clears), the grown box
   // (grown_clears; all 1 without a grown box). Valid until the next run.
   std::span<const char> clears() const { return {clears_.data(), size_}; }
@@ -179,30 +194,63 @@ class TwoBoxClearance {
   // How many fragments the first tier left to the second.
   std::size_t first_tier_doubts() const { return doubts_; }
 
+  // What one pass of both tiers over some fragments works in (all of them for run(), a chunk on
+  // one worker for the run with a ParallelFor). Public only for the .cpp's free functions.
+  struct WorkSpace {
+    explicit WorkSpace(std::pmr::memory_resource* mem)
+        : doubt(mem),
+          groups(mem),
+          kept(mem),
+          verdicts(mem),
+          piece_rows(mem),
+          piece_lanes(mem),
+          unsettled(mem) {}
+    // Room for a pass over n fragments, every page touched (`unsettled` aside).
+    void reserve(std::size_t n);
+    // Sized for a pass over n fragments, within reserve()'s room after it (`unsettled` aside).
+    void size_for(std::size_t n);
+
+    std::pmr::vector<std::int32_t> doubt;   // fragments the first tier left in doubt
+    std::pmr::vector<std::int32_t> groups;  // groups of four with one in doubt (wide lanes)
+    // For each of those groups, what the first tier found, kept for the second rather than
+    // gathered and tested again: four lanes of each of its numbers (positions relative to the
+    // frame, velocities, radii, intervals), and which lanes it cleared of which box (then the
+    // second tier's verdict).
+    std::pmr::vector<double> kept;
+    std::pmr::vector<std::int32_t> verdicts;
+    // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
+    // row by row, and each one's group and lane.
+    std::pmr::vector<double> piece_rows;
+    std::pmr::vector<std::int32_t> piece_lanes;
+    // A chunk's unsettled fragments, before they go to the run's list (the chunked run's work
+    // spaces only: kChunk entries).
+    std::pmr::vector<std::int32_t> unsettled;
+    // Whether the next pass's first loop keeps them: the last pass left more than a few groups
+    // in doubt (at first yes, as an explosion's first step has all in doubt). It changes how fast
+    // a pass is, never what it answers.
+    bool keep_rows = true;
+  };
+
  private:
-  // Room in the wide lanes' work arrays (kept_ to piece_lanes_) for n fragments.
-  void size_wide_work(std::size_t n);
+  // What one chunk found besides its flags, for the join.
+  struct ChunkResult {
+    std::size_t unsettled = 0;
+    std::size_t doubts = 0;
+    double max_radius_m = 0.0;
+  };
+  // Sets the flags to "clear" and the counts to zero for a run over n fragments.
+  void start_run(std::size_t n);
+  // The chunks' unsettled slices, counts and radii joined in chunk order.
+  void join_chunks(std::size_t chunks);
 
   std::size_t size_ = 0;
   std::pmr::memory_resource* mem_;
   std::pmr::vector<char> clears_{mem_};
   std::pmr::vector<char> grown_clears_{mem_};
-  [[maybe_unused]] bool wide_ = false;           // unused where there are no wide lanes
-  std::pmr::vector<std::int32_t> doubt_{mem_};   // fragments the first tier left in doubt
-  std::pmr::vector<std::int32_t> groups_{mem_};  // groups of four with one in doubt (wide lanes)
-  // For each of those groups, what the first tier found, kept for the second rather than gathered
-  // and tested again: four lanes of each of its numbers (positions relative to the frame,
-  // velocities, radii, intervals), and which lanes it cleared of which box (then the second
-  // tier's verdict).
-  std::pmr::vector<double> kept_{mem_};
-  std::pmr::vector<std::int32_t> verdicts_{mem_};
-  // Whether the next run's first loop keeps them: the last run left more than a few groups in
-  // doubt (at first yes, as an explosion's first step has all in doubt).
-  [[maybe_unused]] bool keep_rows_ = true;  // unused where there are no wide lanes
-  // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
-  // row by row, and each one's group and lane.
-  std::pmr::vector<double> piece_rows_{mem_};
-  std::pmr::vector<std::int32_t> piece_lanes_{mem_};
+  [[maybe_unused]] bool wide_ = false;         // unused where there are no wide lanes
+  WorkSpace whole_{mem_};                      // run()'s, for every fragment at once
+  std::pmr::vector<WorkSpace> workers_{mem_};  // the chunked run's, one per worker
+  std::pmr::vector<ChunkResult> chunks_{mem_};
   std::pmr::vector<std::int32_t> unsettled_{mem_};
   std::size_t unsettled_count_ = 0;
   std::size_t doubts_ = 0;

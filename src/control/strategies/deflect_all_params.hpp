@@ -1,7 +1,8 @@
 #pragma once
-// `deflect-all`'s parameters and their scene keys ([deflect-all]).
+// `deflect-all`'s parameters and their legal values (the tool's scene keys, [deflect-all], are
+// src/strategies/deflect_all_keys.hpp).
 
-#include "strategies/param_spec.hpp"
+#include "strategies/param_range.hpp"
 
 namespace fragsim {
 
@@ -10,6 +11,10 @@ struct DeflectAllParams {
   double range_m = 6.0;      // only fragments closer than this to the eye are pushed
 };
 
-const ParamSpec<DeflectAllParams>& deflect_all_param_spec();
+// Each numeric field's legal values (param_range.hpp), in the struct's order.
+inline constexpr ParamRange kDeflectAllRanges[] = {
+    {.name = "accel_mps2", .field = "deflect_all.accel_mps2", .lo = 0, .hi = 1e6},
+    {.name = "range_m", .field = "deflect_all.range_m", .lo = 0, .hi = 1e6},
+};
 
 }  // namespace fragsim

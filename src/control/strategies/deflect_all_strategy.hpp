@@ -2,7 +2,9 @@
 // `deflect-all`: every fragment approaching the camera within range is pushed away from the view
 // axis, with no prediction and no choice of edge (thesis fig. 2.2).
 
+#include <Eigen/Core>
 #include <memory_resource>
+#include <vector>
 
 #include "strategies/deflect_all_params.hpp"
 #include "strategies/strategy.hpp"
@@ -11,18 +13,27 @@ namespace fragsim {
 
 class DeflectAllStrategy final : public Strategy {
  public:
-  // It keeps nothing between steps: `mem` is taken for a constructor like the other strategies'.
+  // It keeps nothing of the run between steps; `mem` holds the parallel step's work space.
   explicit DeflectAllStrategy(const DeflectAllParams& params,
                               std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : params_(params) {
-    (void)mem;
-  }
+      : params_(params), pushes_(mem) {}
   std::string name() const override { return "deflect-all"; }
-  void reset(int) override {}
+  void reset(int fragment_count) override { reserve(fragment_count); }
+  void reserve(int fragment_count) override;
+  // Each fragment's push is its own: on ctx.parallel's workers, one slot per fragment, gathered
+  // in fragment order afterwards (the same forces and capped as on one thread).
   void step(const StepContext& ctx, StepOutput& out) override;
 
  private:
+  // One fragment's push, if it gets one (before the cap, which the gather applies in order).
+  struct Push {
+    bool any = false;
+    Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
+  };
+  Push push_of(const StepContext& ctx, std::size_t i) const;
+
   DeflectAllParams params_;
+  std::pmr::vector<Push> pushes_;  // the parallel step's, one per fragment
 };
 
 }  // namespace fragsim

@@ -1,10 +1,11 @@
 #pragma once
-// `edge-min`'s parameters (docs/method.md section 4) and their scene keys ([edge-min]).
+// `edge-min`'s parameters (docs/method.md section 4) and their legal values (the tool's scene
+// keys, [edge-min], are src/strategies/edge_min_keys.hpp).
 
 #include <array>
 #include <limits>
 
-#include "strategies/param_spec.hpp"
+#include "strategies/param_range.hpp"
 
 namespace fragsim {
 
@@ -54,9 +55,35 @@ struct EdgeMinParams {
   double cover_margin = 0.03;  // cells across the region's width; rows follow the aspect
 };
 
-// The edge weights as a scene value: four numbers, each finite and >= 0, not all zero.
-std::optional<std::string> edge_weights_rule(const std::array<double, 4>& w);
+// Each numeric field's legal values (param_range.hpp), in the struct's order; camera_model is
+// checked by the C API against its own enum. edge_weights: each of the four weights, and at least
+// one of them > 0 (some_edge_allowed). The assumed camera bounds stand in for a camera that
+// declares none: the acceleration must be a number to reason with (a camera that accelerates
+// without bound is `reachable`'s case); the turn rate may be inf, as every orientation is bounded
+// by the ball around the eye. The cover_* fields past cover_region have no field in the C def.
+inline constexpr ParamRange kEdgeMinRanges[] = {
+    {.name = "margin_m", .field = "edge_min.margin_m", .lo = 0, .hi = 100},
+    {.name = "a_max_mps2", .field = "edge_min.a_max_mps2", .lo = 0, .hi = 1e9},
+    {.name = "camera_accel_mps2", .field = "edge_min.camera_accel_mps2", .lo = 0, .hi = 1e6},
+    {.name = "camera_turn_degps",
+     .field = "edge_min.camera_turn_degps",
+     .lo = 0,
+     .hi = 1e6,
+     .inf_ok = true},
+    {.name = "horizon_cap_s", .field = "horizon_cap_s", .lo = 0, .hi = 3600, .lo_open = true},
+    {.name = "max_solves", .field = "edge_min.max_solves", .lo = 0, .hi = 1e8, .whole = true},
+    {.name = "edge_weights", .field = "edge_min.edge_weights", .lo = 0, .hi = 1e6},
+    {.name = "cover_max", .field = "edge_min.cover_max", .lo = 0, .hi = 1},
+    {.name = "cover_region", .field = "edge_min.cover_region", .lo = 0, .hi = 1, .lo_open = true},
+    {.name = "cover_horizon_s", .field = nullptr, .lo = 0, .hi = 10, .lo_open = true},
+    {.name = "cover_samples", .field = nullptr, .lo = 1, .hi = 120, .whole = true},
+    {.name = "cover_cells", .field = nullptr, .lo = 2, .hi = 256, .whole = true},
+    {.name = "cover_margin", .field = nullptr, .lo = 0, .hi = 0.5},
+};
 
-const ParamSpec<EdgeMinParams>& edge_min_param_spec();
+// The edge weights' rule beyond each weight's range: not all four edges forbidden.
+constexpr bool some_edge_allowed(const std::array<double, 4>& w) {
+  return w[0] > 0.0 || w[1] > 0.0 || w[2] > 0.0 || w[3] > 0.0;
+}
 
 }  // namespace fragsim

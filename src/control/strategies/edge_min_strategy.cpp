@@ -15,12 +15,17 @@
 #include "geometry/time_to_plane.hpp"
 #include "strategies/force_cap.hpp"
 #include "strategies/intervals.hpp"
+#include "strategies/parallel_ranges.hpp"
 #include "strategies/slab_times.hpp"
 
 namespace fragsim {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The fewest exact solves a worker takes at once: a solve costs about a microsecond
+// (docs/benchmarks.md), so sixteen are well worth handing to a worker.
+constexpr std::int32_t kMinSolveRange = 16;
 
 // c0 + c1 t + c2 t^2: one camera-space coordinate of the relative path.
 using Coord = AxisQuadratic;
@@ -360,17 +365,29 @@ void EdgeMinStrategy::reset(int fragment_count) {
   cover_.reset(fragment_count);
   // The rejection's work space, its pages touched, so that no step allocates or faults.
   clearance_.reserve(static_cast<std::size_t>(std::max(fragment_count, 0)));
+  reserve_answers(static_cast<std::size_t>(std::max(fragment_count, 0)));
 }
 
 void EdgeMinStrategy::reserve(int fragment_count) {
   const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
   clearance_.reserve(n);
+  reserve_answers(n);
   if (params_.max_solves > 0) {  // the budget's state and work space
     last_force_N_.reserve(n);
     carried_from_.reserve(n);
     queue_.reserve(n);
     deferred_.reserve(n);
   }
+}
+
+void EdgeMinStrategy::set_worker_count(int workers) {
+  clearance_.set_workers(workers);
+}
+
+// Kept at its largest size (its pages written once): reserve() runs before every step of the
+// controller library, where a fresh reserve_touched of the whole array would cost a pass over it.
+void EdgeMinStrategy::reserve_answers(std::size_t n) {
+  if (answers_.size() < n) answers_.resize(n);
 }
 
 void EdgeMinStrategy::carry_over(std::span<const int> previous) {
@@ -402,8 +419,8 @@ double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
 }
 
 double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
-  const double declared = ctx.camera_max_turn_radps;
-  return declared >= 0.0 ? declared : params_.camera_turn_degps * kPi / 180.0;
+  const double declared = ctx.camera_max_turn_degps;
+  return (declared >= 0.0 ? declared : params_.camera_turn_degps) * kPi / 180.0;
 }
 
 void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
@@ -505,13 +522,21 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     }
     set_window(r_hint_m);
   }
-  clearance_.run(ctx.fragments, boxes);
+  // In chunks on the workers when there are some: the same answers (TwoBoxClearance::run).
+  const auto reject = [&] {
+    if (ctx.parallel != nullptr) {
+      clearance_.run(ctx.fragments, boxes, ctx.parallel);
+    } else {
+      clearance_.run(ctx.fragments, boxes);
+    }
+  };
+  reject();
   double look_s = 0.0;
   if (boxes.grown) {
     const double r_max_m = clearance_.max_radius_m();
     if (r_max_m > r_hint_m) {
       set_window(r_max_m);
-      clearance_.run(ctx.fragments, boxes);
+      reject();
     }
     r_max_hint_m_ = r_max_m;
     look_s = look_for(r_max_m);
@@ -569,8 +594,16 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   }
 
   const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-  // The exact solve of one fragment the rejections left in doubt: its force, if any, goes to out.
+  // The exact solve of one fragment the rejections left in doubt: whether it is a candidate and
+  // the force it asks for, if any. It reads only the step's constants and the fragment, so
+  // fragments may be solved on any workers at once.
   const auto solve = [&](std::size_t i, bool grown_clear) {
+    SolveAnswer answer;
+    const auto push = [&answer](const Eigen::Vector3d& force_N) {
+      answer.pushed = true;
+      answer.force_N = force_N;
+      return answer;
+    };
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = cam.to_camera(f.position_m);
     const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
@@ -595,12 +628,10 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                              : std::isfinite(nominal.need[best]) ? nominal.need[best]
                                                                  : 2.0 * params_.a_max_mps2 + 1.0;
     if (!robust) {
-      if (!nominal.threat) return;
-      out.activity.candidates.push_back(static_cast<int>(i));
-      if (a_nominal <= 0.0) return;
-      apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
-                   params_.a_max_mps2);
-      return;
+      if (!nominal.threat) return answer;
+      answer.candidate = true;
+      if (a_nominal <= 0.0) return answer;
+      return push(f.mass_kg * a_nominal * dir[best]);
     }
 
     // The worst case over the look-ahead window.
@@ -617,8 +648,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     const std::span<const Constraint> cons(cons_store.data(), n_cons);
     const double own_look_s = std::min(look_s, own_horizon_s);
     const GrownSets now = grown_clear ? GrownSets{} : grown_sets(cons, slabs, own_look_s);
-    if (!nominal.threat && !now.threat) return;
-    out.activity.candidates.push_back(static_cast<int>(i));
+    if (!nominal.threat && !now.threat) return answer;
+    answer.candidate = true;
     if (now.threat) {
       // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
       // moving the fragment by a dt t along its axis; from the next step on, a push of at most
@@ -660,19 +691,43 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
         // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
         const bool beaten = !(a_wc <= params_.a_max_mps2);
         const std::size_t way = beaten && nominal.threat ? best : wc_best;
-        apply_capped(out, static_cast<int>(i), f.mass_kg * std::max(a_nominal, a_wc) * dir[way],
-                     f.mass_kg, params_.a_max_mps2);
-        return;
+        return push(f.mass_kg * std::max(a_nominal, a_wc) * dir[way]);
       }
     }
-    if (a_nominal <= 0.0) return;
-    apply_capped(out, static_cast<int>(i), f.mass_kg * a_nominal * dir[best], f.mass_kg,
-                 params_.a_max_mps2);
+    if (a_nominal <= 0.0) return answer;
+    return push(f.mass_kg * a_nominal * dir[best]);
+  };
+  // A solve's answer into out: the candidate, then its force through the cap.
+  const auto emit = [&](std::size_t i, const SolveAnswer& answer) {
+    if (answer.candidate) out.activity.candidates.push_back(static_cast<int>(i));
+    if (answer.pushed) {
+      apply_capped(out, static_cast<int>(i), answer.force_N, ctx.fragments[i].mass_kg,
+                   params_.a_max_mps2);
+    }
+  };
+  const auto solve_unsettled = [&](std::size_t k) {
+    const auto i = static_cast<std::size_t>(unsettled[k]);
+    return solve(i, grown_clears[i] != 0);
   };
 
-  if (!budget) {
-    for (const std::int32_t i : unsettled) {
-      solve(static_cast<std::size_t>(i), grown_clears[static_cast<std::size_t>(i)] != 0);
+  if (!budget && ctx.parallel == nullptr) {
+    for (std::size_t k = 0; k < unsettled.size(); ++k) {
+      emit(static_cast<std::size_t>(unsettled[k]), solve_unsettled(k));
+    }
+  }
+  if (!budget && ctx.parallel != nullptr) {
+    // Each answer to its own slot on the workers, then into out in the fragments' order: the
+    // same candidates, forces, capped and guarded as one after the other.
+    if (answers_.size() < unsettled.size()) answers_.resize(unsettled.size());
+    const auto solve_range = [&](std::int32_t begin, std::int32_t end, std::uint32_t) {
+      for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
+        answers_[k] = solve_unsettled(k);
+      }
+    };
+    for_ranges(ctx.parallel, static_cast<std::int32_t>(unsettled.size()), kMinSolveRange,
+               solve_range);
+    for (std::size_t k = 0; k < unsettled.size(); ++k) {
+      emit(static_cast<std::size_t>(unsettled[k]), answers_[k]);
     }
   }
   for (std::size_t i = 0; budget && i < n; ++i) {
@@ -683,7 +738,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
     const bool grown_clear = !robust || grown_clears[i];
     const bool cleared = clears[i] && grown_clear;
     const std::size_t forces_before = out.forces.size();
-    if (!cleared) solve(i, grown_clear);
+    if (!cleared) emit(i, solve(i, grown_clear));
     // What this step gave fragment i, for a later step that defers it.
     if (budget) {
       last_force_N_[i] =

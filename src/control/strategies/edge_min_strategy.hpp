@@ -27,11 +27,17 @@
 // starts one step later would still clear the grown box, the grown box's least push (at least
 // the constant one's) once waiting would no longer be safe.
 //
-// Which bounds: the scene's declared ones (StepContext::camera_max_accel_mps2, _turn_radps)
+// Which bounds: the scene's declared ones (StepContext::camera_max_accel_mps2, _turn_degps)
 // when it declares them (>= 0); otherwise (kUndeclaredBound: a path or a track, which declares
 // none) the parameters' assumed camera_accel_mps2 and camera_turn_degps. A declared infinite
 // acceleration (a player with instant turns) leaves bounded_accel only the ball V_c t, which is
 // reachable's region: it still holds, since reachable does not depend on A at all.
+//
+// On workers (StepContext::parallel): the cheap rejection runs in chunks and the exact solves of
+// the fragments it leaves in doubt in ranges, each fragment's answer to its own place, gathered
+// in fragment order afterwards, so every answer is bit for bit the calling thread's. The budget
+// (max_solves) and the occlusion bound (cover_max) stay on the calling thread: the budget ranks
+// all the doubts before any solve, and the bound's prediction takes the pushes one by one.
 
 #include <array>
 #include <memory_resource>
@@ -68,6 +74,8 @@ class EdgeMinStrategy final : public Strategy {
   void carry_over(std::span<const int> previous);
   void undo_carry_over();
   void reserve(int fragment_count) override;
+  // A work space per worker for the rejection's chunks (TwoBoxClearance::set_workers).
+  void set_worker_count(int workers) override;
 
   // The time until the path y(t) = y0 + vy t + half_gy t^2 comes down through ground_m: the later
   // root, going down; +inf if it never does (gravity off, or ground_m = -inf: no ground), 0 if it
@@ -97,6 +105,16 @@ class EdgeMinStrategy final : public Strategy {
   // Work space kept between steps; holds no state of the run (the largest radius of the last
   // step is a hint for the rejection's window: it decides how fast a step is, not its answer).
   TwoBoxClearance clearance_{mem_};
+  // What the exact solve gave one fragment, written by whichever worker solved it and gathered
+  // in fragment order (the parallel step only): whether it is a candidate, and the force asked
+  // for, before the cap (the gather caps it, so capped and guarded come out in order too).
+  struct SolveAnswer {
+    bool candidate = false;
+    bool pushed = false;
+    Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
+  };
+  std::pmr::vector<SolveAnswer> answers_{mem_};  // one per unsettled fragment, in its order
+  void reserve_answers(std::size_t n);
   double r_max_hint_m_ = -1.0;  // none yet
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.

@@ -1,7 +1,8 @@
 #pragma once
-// `edge`'s parameters (the thesis, docs/method.md section 3) and their scene keys ([edge]).
+// `edge`'s parameters (the thesis, docs/method.md section 3) and their legal values (the tool's
+// scene keys, [edge], are src/strategies/edge_keys.hpp).
 
-#include "strategies/param_spec.hpp"
+#include "strategies/param_range.hpp"
 #include "strategies/predictor.hpp"
 
 namespace fragsim {
@@ -28,6 +29,12 @@ struct EdgeParams {
   double horizon_cap_s = 3.0;
 };
 
-const ParamSpec<EdgeParams>& edge_param_spec();
+// Each numeric field's legal values (param_range.hpp), in the struct's order; the enums are
+// checked by the C API against its own enums.
+inline constexpr ParamRange kEdgeRanges[] = {
+    {.name = "k", .field = "edge.k_Nms2", .lo = 0, .hi = 1e12},
+    {.name = "a_max_mps2", .field = "edge.a_max_mps2", .lo = 0, .hi = 1e9},
+    {.name = "horizon_cap_s", .field = "horizon_cap_s", .lo = 0, .hi = 3600, .lo_open = true},
+};
 
 }  // namespace fragsim

@@ -22,7 +22,6 @@ class EdgeStrategy final : public Strategy {
                         std::pmr::memory_resource* mem = std::pmr::get_default_resource())
       : params_(params), mem_(mem) {}
   std::string name() const override { return "edge"; }
-  Predictor path_predictor() const override { return params_.predictor; }
   void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
 

@@ -19,7 +19,10 @@ inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& f
     return;
   }
   const double limit_N = mass_kg * a_max_mps2;
-  const double norm_N = force_N.norm();
+  double norm_N = force_N.norm();
+  // The squares overflow above about 1e154 N and vanish below about 1e-154 N: there the norm is
+  // taken with scaling. Elsewhere the plain norm, whose bits the pinned results rely on.
+  if (!std::isfinite(norm_N) || norm_N < 1e-150) norm_N = force_N.stableNorm();
   if (norm_N == 0.0) return;
   // A force built as exactly m a_max (deflect-all) must not count as capped through rounding.
   if (norm_N > limit_N * (1.0 + 1e-12)) {

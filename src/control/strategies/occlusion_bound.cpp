@@ -102,7 +102,11 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   for (long long m : steps) times_s_.push_back(static_cast<double>(m) * dt);
 
   cols_ = params.cover_cells;
-  rows_ = std::max(1, static_cast<int>(std::lround(cols_ / cam.aspect)));
+  // Square cells on screen, but at most 16 rows per column: a screen taller than 16 times its width
+  // gets taller cells, so the grid's cost is bounded for any aspect (and the row count fits an
+  // int before it is rounded).
+  const double rows = std::min(cols_ / cam.aspect, 16.0 * cols_);
+  rows_ = std::max(1, static_cast<int>(std::lround(rows)));
   const std::size_t cells = static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_);
   count_.assign(cells * static_cast<std::size_t>(k_samples), 0);
   covered_.assign(static_cast<std::size_t>(k_samples), 0);

@@ -1,23 +1,22 @@
 #pragma once
-// The strategy interface: what stands between the explosion and the camera. A strategy sees the
-// world through StepContext (read-only) and answers through StepOutput; the simulation applies the
-// answer. Parameters are fixed at construction; reset() clears the run state so a rerun is
-// reproducible.
+// The controller's strategy interface: what stands between the explosion and the camera. A
+// strategy sees the world through StepContext (read-only) and answers forces through StepOutput;
+// the controller (or the tool's run) applies them. Parameters are fixed at construction; reset()
+// clears the run state so a rerun is reproducible.
 
 #include <limits>
 #include <memory_resource>
-#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
 #include "geometry/fragment_state.hpp"
-#include "strategies/predictor.hpp"
+#include "strategies/parallel_for.hpp"
 
 namespace fragsim {
 
-// A camera bound not declared (StepContext::camera_max_accel_mps2, _turn_radps): any negative
+// A camera bound not declared (StepContext::camera_max_accel_mps2, _turn_degps): any negative
 // number reads so, and this one is what the tool and the C API's FRAGSIM_UNDECLARED pass.
 inline constexpr double kUndeclaredBound = -1.0;
 
@@ -40,11 +39,14 @@ struct StepContext {
   // bound (0 included: a camera that cannot turn). A strategy that assumes a bound the scene does
   // not declare says so in its own parameters.
   double camera_max_accel_mps2 = kUndeclaredBound;
-  double camera_max_turn_radps = kUndeclaredBound;
+  double camera_max_turn_degps = kUndeclaredBound;
   Eigen::Vector3d camera_body_half_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d gravity_mps2 = Eigen::Vector3d::Zero();
   double ground_height_m = -std::numeric_limits<double>::infinity();  // -infinity: no ground
   std::span<const FragmentState> fragments;
+  // Where per-fragment work may run: the game's workers, or nullptr for the calling thread. It
+  // changes how fast a step is, never what it answers.
+  const ParallelFor* parallel = nullptr;
 };
 
 // What a strategy did in a step besides its effects, for the report (RunSummary's strategy
@@ -75,16 +77,12 @@ struct StepActivity {
   }
 };
 
-// A strategy's answer for one step: an effect for each part of the run that applies one (the
-// physics, the camera, the drawing), and its activity for the report.
+// A strategy's answer for one step: the forces the physics applies, and the strategy's activity
+// for the report and the C API's stats.
 struct StepOutput {
   explicit StepOutput(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : forces(mem), opacity(mem), activity(mem) {}
-  std::pmr::vector<AppliedForce> forces;  // the physics: at most one entry per fragment
-  std::optional<double> near_m;           // the camera: a near distance other than the scene's
-  // The drawing: each fragment's opacity in the frame after this step, 0 (invisible) to 1 (fade);
-  // empty: every fragment opaque, as for every strategy that draws fragments as they are.
-  std::pmr::vector<float> opacity;
+      : forces(mem), activity(mem) {}
+  std::pmr::vector<AppliedForce> forces;  // at most one entry per fragment
   StepActivity activity;
 
   // Room for one force per fragment: a step within it does not allocate.
@@ -94,34 +92,18 @@ struct StepOutput {
   }
   void clear() {
     forces.clear();
-    near_m.reset();
-    opacity.clear();
     activity.clear();
   }
-};
-
-// A kinematic box the simulation must carry in front of the camera (the `wall` strategy).
-struct CameraWallSpec {
-  double distance_m = 0.0;  // centre of the box along the view direction
-  double width_m = 0.0;
-  double height_m = 0.0;
-  double thickness_m = 0.0;
-  double restitution = 0.0;
-};
-
-// What a strategy needs the world to contain besides fragments, ground and camera.
-struct WorldNeeds {
-  std::optional<CameraWallSpec> camera_wall;
 };
 
 class Strategy {
  public:
   virtual ~Strategy() = default;
   virtual std::string name() const = 0;
-  virtual WorldNeeds needs() const { return {}; }
-  // The path it predicts fragments with; the baselines, which do not predict, and edge-min are
-  // measured against ODE's own discrete parabola.
-  virtual Predictor path_predictor() const { return Predictor::kDiscrete; }
+  // Called once, right after construction and before reserve(), by a caller that runs steps with
+  // a ParallelFor of that many workers (StepContext::parallel): one work space per worker. May
+  // throw std::bad_alloc.
+  virtual void set_worker_count(int workers) { (void)workers; }
   // Called before the first step of every run.
   virtual void reset(int fragment_count) = 0;
   // Grows the work space for steps of up to fragment_count fragments, changing nothing of the run:

@@ -124,16 +124,20 @@ struct Scene {
   Scene() {
     for (int k = 0; k < kSteps; ++k) steps.push_back(fragments_at(k));
   }
-  fragsim_step_input input(int k) const {
+  // Step k's input; its one camera's pose goes to `pose`, which must outlive the call.
+  fragsim_step_input input(int k, fragsim_camera_pose& pose) const {
     fragsim_step_input in = fragsim_default_step_input();
     in.time_s = k * kDt;
     in.ground_height_m = -1.6;
-    in.camera.velocity_mps = {0.0, 0.0, -1.0};
-    in.camera.eye_m = {0.0, 0.0, -1.0 * k * kDt};
-    const auto& f = steps[static_cast<std::size_t>(k)];
-    in.fragments = f.data();
-    in.fragment_count = static_cast<int32_t>(f.size());
+    pose = fragsim_default_camera_pose();
+    pose.velocity_mps = {0.0, 0.0, -1.0};
+    pose.eye_m = {0.0, 0.0, -1.0 * k * kDt};
+    in.camera_poses = &pose;
+    in.camera_count = 1;
     return in;
+  }
+  const std::vector<fragsim_fragment>& fragments(int k) const {
+    return steps[static_cast<std::size_t>(k)];
   }
 };
 
@@ -170,9 +174,16 @@ fragsim_controller_def hooked(fragsim_controller_def def, Hook& h) {
 
 fragsim_status step(fragsim_controller_id c, const Scene& s, int k, Forces& out,
                     fragsim_step_stats* stats = nullptr) {
-  const fragsim_step_input in = s.input(k);
-  out.assign(static_cast<std::size_t>(in.fragment_count), fragsim_vec3{7.0, 7.0, 7.0});
-  return fragsim_controller_step(c, &in, out.data(), stats);
+  // One camera, set before each step: setting one camera again allocates nothing and keeps the
+  // fragments' state.
+  const fragsim_camera_def camera = fragsim_default_camera_def();
+  if (fragsim_controller_set_cameras(c, &camera, 1) != FRAGSIM_OK) return FRAGSIM_ERROR_INTERNAL;
+  fragsim_camera_pose pose;
+  const fragsim_step_input in = s.input(k, pose);
+  const std::vector<fragsim_fragment>& f = s.fragments(k);
+  out.assign(f.size(), fragsim_vec3{7.0, 7.0, 7.0});
+  return fragsim_controller_step(c, &in, f.data(), static_cast<int32_t>(f.size()), out.data(),
+                                 stats);
 }
 
 bool same(const Forces& a, const Forces& b) {

@@ -1,9 +1,11 @@
-/* Cameras set once and several cameras (control 0.7), in C99 as a game sees the API.
+/* Cameras set once and several cameras, in C99 as a game sees the API.
  *
- * - Set once: a controller given its camera's constants by fragsim_controller_set_cameras and
- *   only poses per step returns the very forces (bit for bit) and stats of one given the whole
- *   camera every step, over a blast of 400 fragments and 150 steps.
- * - Refusals name the field: cameras[1].near_m, camera_poses[1].right, camera_count.
+ * - Set once: a controller given its camera's constants once by fragsim_controller_set_cameras
+ *   and only poses per step returns the very forces (bit for bit) and stats of one given the same
+ *   constants again before every step (the state kept per fragment survives a set of the same
+ *   count), over a blast of 400 fragments and 150 steps.
+ * - Refusals name the field: cameras[1].near_m, camera_poses[1].right, camera_count; a step before
+ *   any set is refused, and a refused set keeps the cameras as they were.
  * - Two eyes of a headset, 6.4 cm apart, walking into a blast aimed between them: without forces
  *   some fragments touch an eye's near rectangle or the headset (the test can fail); with the
  *   controller's forces none touches either eye, and no conflict is reported.
@@ -64,16 +66,22 @@ static double box_distance(const double q[3], const double c[3], const double h[
   return sqrt(d2);
 }
 
+/* A camera as this test moves it: its constants and its pose. */
+typedef struct {
+  fragsim_camera_def def;
+  fragsim_camera_pose pose;
+} camera;
+
 /* Whether a sphere at p of radius r touches the camera's near rectangle or body. */
-static int touches(const fragsim_camera* c, fragsim_vec3 p, double r) {
-  const fragsim_vec3 d = sub(p, c->eye_m);
+static int touches(const camera* c, fragsim_vec3 p, double r) {
+  const fragsim_vec3 d = sub(p, c->pose.eye_m);
   /* Camera coordinates: x right, y up, z along the view. */
-  const double q[3] = {dot(d, c->right), dot(d, c->up), dot(d, c->forward)};
-  const double half_h = c->near_m * tan(c->fovy_deg * 3.14159265358979323846 / 360.0);
-  const double near_c[3] = {0.0, 0.0, c->near_m};
-  const double near_h[3] = {half_h * c->aspect, half_h, 0.0};
+  const double q[3] = {dot(d, c->pose.right), dot(d, c->pose.up), dot(d, c->pose.forward)};
+  const double half_h = c->def.near_m * tan(c->def.fovy_deg * 3.14159265358979323846 / 360.0);
+  const double near_c[3] = {0.0, 0.0, c->def.near_m};
+  const double near_h[3] = {half_h * c->def.aspect, half_h, 0.0};
   const double body_c[3] = {0.0, 0.0, 0.0};
-  const double body_h[3] = {c->body_half_m.x, c->body_half_m.y, c->body_half_m.z};
+  const double body_h[3] = {c->def.body_half_m.x, c->def.body_half_m.y, c->def.body_half_m.z};
   return box_distance(q, near_c, near_h) <= r || box_distance(q, body_c, body_h) <= r;
 }
 
@@ -110,7 +118,7 @@ static void blast(world* w, fragsim_vec3 centre, fragsim_vec3 target, double spr
 
 /* One step of the world after the forces: semi-implicit Euler, and the touch check against each
  * camera along the step's segment. Returns the fragments touching some camera this step. */
-static int advance(world* w, const fragsim_camera* cams, int n_cams, double dt_s) {
+static int advance(world* w, const camera* cams, int n_cams, double dt_s) {
   int i, s, k, hits = 0;
   for (i = 0; i < N_FRAGMENTS; ++i) {
     fragsim_fragment* f = &w->f[i];
@@ -143,37 +151,16 @@ static int all_finite(const world* w) {
   return 1;
 }
 
-static fragsim_camera camera_at(fragsim_vec3 eye, double facing_sign, fragsim_vec3 velocity) {
-  fragsim_camera c = fragsim_default_camera();
-  c.eye_m = eye;
+static camera camera_at(fragsim_vec3 eye, double facing_sign, fragsim_vec3 velocity) {
+  camera c;
+  c.def = fragsim_default_camera_def();
+  c.pose = fragsim_default_camera_pose();
+  c.pose.eye_m = eye;
   /* facing_sign +1: looking down -z; -1: looking down +z (turned about y). */
-  c.right = v3(facing_sign, 0.0, 0.0);
-  c.forward = v3(0.0, 0.0, -facing_sign);
-  c.velocity_mps = velocity;
+  c.pose.right = v3(facing_sign, 0.0, 0.0);
+  c.pose.forward = v3(0.0, 0.0, -facing_sign);
+  c.pose.velocity_mps = velocity;
   return c;
-}
-
-static fragsim_camera_pose pose_of(const fragsim_camera* c) {
-  fragsim_camera_pose p;
-  p.eye_m = c->eye_m;
-  p.right = c->right;
-  p.up = c->up;
-  p.forward = c->forward;
-  p.velocity_mps = c->velocity_mps;
-  return p;
-}
-
-static fragsim_camera_def def_of(const fragsim_camera* c) {
-  fragsim_camera_def d = fragsim_default_camera_def();
-  d.fovy_deg = c->fovy_deg;
-  d.aspect = c->aspect;
-  d.near_m = c->near_m;
-  d.far_m = c->far_m;
-  d.body_half_m = c->body_half_m;
-  d.max_speed_mps = c->max_speed_mps;
-  d.max_accel_mps2 = c->max_accel_mps2;
-  d.max_turn_radps = c->max_turn_radps;
-  return d;
 }
 
 static fragsim_controller_id make_controller(void) {
@@ -183,48 +170,46 @@ static fragsim_controller_id make_controller(void) {
   return id;
 }
 
-/* The camera set once gives what the whole camera per step gives, to the bit. */
+/* The camera set once gives what the same constants set again before every step give, to the
+ * bit: a set of the same count keeps the state kept per fragment. */
 static void test_set_once_is_the_per_step_call(void) {
   static world a, b;
   const double dt_s = 1.0 / 60.0;
-  fragsim_controller_id whole = make_controller();
-  fragsim_controller_id parts = make_controller();
-  fragsim_step_input in_whole = fragsim_default_step_input();
-  fragsim_step_input in_parts = fragsim_default_step_input();
-  fragsim_camera cam = camera_at(v3(0.0, 1.6, 0.0), 1.0, v3(0.0, 0.0, -1.5));
-  fragsim_camera_def def = def_of(&cam);
-  fragsim_camera_pose pose;
+  fragsim_controller_id every = make_controller();
+  fragsim_controller_id once = make_controller();
+  fragsim_step_input in_every = fragsim_default_step_input();
+  fragsim_step_input in_once = fragsim_default_step_input();
+  camera cam = camera_at(v3(0.0, 1.6, 0.0), 1.0, v3(0.0, 0.0, -1.5));
+  fragsim_camera_pose pose_every, pose_once;
   int step, differ = 0, pushed = 0;
   blast(&a, v3(0.0, 1.6, -8.0), v3(0.0, 1.6, 0.0), 0.4, 7);
   blast(&b, v3(0.0, 1.6, -8.0), v3(0.0, 1.6, 0.0), 0.4, 7);
-  CHECK(fragsim_controller_set_cameras(parts, &def, 1) == FRAGSIM_OK);
-  in_whole.ground_height_m = in_parts.ground_height_m = 0.0;
-  in_whole.fragment_count = in_parts.fragment_count = N_FRAGMENTS;
-  in_whole.fragments = a.f;
-  in_parts.fragments = b.f;
-  in_parts.camera_poses = &pose;
-  in_parts.camera_count = 1;
-  /* Whatever in_parts.camera holds is ignored with camera_count 1: make it nonsense. */
-  in_parts.camera.near_m = -1.0;
+  CHECK(fragsim_controller_set_cameras(once, &cam.def, 1) == FRAGSIM_OK);
+  in_every.ground_height_m = in_once.ground_height_m = 0.0;
+  in_every.camera_poses = &pose_every;
+  in_once.camera_poses = &pose_once;
+  in_every.camera_count = in_once.camera_count = 1;
   for (step = 0; step < N_STEPS; ++step) {
     fragsim_step_stats sa, sb;
-    in_whole.time_s = in_parts.time_s = step * dt_s;
-    in_whole.camera = cam;
-    pose = pose_of(&cam);
-    CHECK(fragsim_controller_step(whole, &in_whole, a.force_N, &sa) == FRAGSIM_OK);
-    CHECK(fragsim_controller_step(parts, &in_parts, b.force_N, &sb) == FRAGSIM_OK);
+    in_every.time_s = in_once.time_s = step * dt_s;
+    pose_every = pose_once = cam.pose;
+    CHECK(fragsim_controller_set_cameras(every, &cam.def, 1) == FRAGSIM_OK);
+    CHECK(fragsim_controller_step(every, &in_every, a.f, N_FRAGMENTS, a.force_N, &sa) ==
+          FRAGSIM_OK);
+    CHECK(fragsim_controller_step(once, &in_once, b.f, N_FRAGMENTS, b.force_N, &sb) == FRAGSIM_OK);
     if (memcmp(a.force_N, b.force_N, sizeof a.force_N) != 0) ++differ;
     CHECK(sa.candidates == sb.candidates && sa.pushed == sb.pushed && sa.capped == sb.capped);
+    CHECK(sa.new_ids == sb.new_ids && sa.dropped_ids == sb.dropped_ids);
     CHECK(sb.conflicts == 0 && sb.first_conflict == -1);
     pushed += sb.pushed;
     advance(&a, &cam, 1, dt_s);
     advance(&b, &cam, 1, dt_s);
-    cam.eye_m = add(cam.eye_m, scale(cam.velocity_mps, dt_s));
+    cam.pose.eye_m = add(cam.pose.eye_m, scale(cam.pose.velocity_mps, dt_s));
   }
   CHECK(differ == 0);
   CHECK(pushed > 0); /* the blast was a threat: the comparison compared forces */
-  fragsim_controller_destroy(whole);
-  fragsim_controller_destroy(parts);
+  fragsim_controller_destroy(every);
+  fragsim_controller_destroy(once);
 }
 
 static int contains(const char* text, const char* part) {
@@ -256,26 +241,37 @@ static void test_refusals_name_the_field(void) {
   /* A refused set changed nothing: the controller still has no cameras. */
   in.camera_poses = poses;
   in.camera_count = 2;
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
-  CHECK(contains(fragsim_controller_last_error(id), "camera_count = 2: the controller has 0"));
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(contains(fragsim_controller_last_error(id), "cameras: none set"));
   CHECK(fragsim_controller_set_cameras(id, defs, 2) == FRAGSIM_OK);
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_OK);
   in.camera_count = 1;
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(contains(fragsim_controller_last_error(id), "camera_count = 1: the controller has 2"));
   in.camera_count = -1;
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   CHECK(contains(fragsim_controller_last_error(id), "camera_count = -1"));
+  in.camera_count = 0; /* no longer a sentinel for a camera in the input: refused */
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(contains(fragsim_controller_last_error(id), "camera_count = 0"));
   in.camera_count = 2;
   in.camera_poses = NULL;
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_NULL_ARGUMENT);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_NULL_ARGUMENT);
+  CHECK(contains(fragsim_controller_last_error(id), "camera_poses: NULL"));
   in.camera_poses = poses;
   poses[1].right = v3(1.0, 0.1, 0.0);
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   CHECK(contains(fragsim_controller_last_error(id), "camera_poses[1].right has length"));
   poses[1].right = v3(1.0, 0.0, 0.0);
   poses[0].eye_m.z = NAN;
-  CHECK(fragsim_controller_step(id, &in, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   CHECK(contains(fragsim_controller_last_error(id), "camera_poses[0].eye_m.z = nan"));
+  poses[0].eye_m.z = 0.0;
+  /* A refused set keeps the two cameras: a step with two poses is still taken. */
+  defs[0].aspect = 1e-4;
+  CHECK(fragsim_controller_set_cameras(id, defs, 1) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(contains(fragsim_controller_last_error(id), "cameras[0].aspect = 0.0001"));
+  CHECK(fragsim_controller_step(id, &in, NULL, 0, NULL, &stats) == FRAGSIM_OK);
   fragsim_controller_destroy(id);
   CHECK(fragsim_controller_set_cameras(id, defs, 1) == FRAGSIM_ERROR_STALE_ID);
 }
@@ -293,31 +289,36 @@ static void test_camera_count_change_forgets(void) {
   defs[0] = defs[1] = fragsim_default_camera_def();
   poses[0] = poses[1] = fragsim_default_camera_pose();
   poses[1].eye_m.x = 0.064;
-  memset(f, 0, sizeof f);
   for (i = 0; i < 3; ++i) {
+    f[i] = fragsim_default_fragment();
     f[i].position_m = v3(3.0 * i, 0.0, -20.0);
     f[i].radius_m = 0.1;
     f[i].mass_kg = 1.0;
     f[i].id = (uint64_t)(7 + i);
   }
-  in.fragments = f;
-  in.fragment_count = 3;
-  CHECK(fragsim_controller_step(id, &in, forces, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_set_cameras(id, defs, 1) == FRAGSIM_OK);
+  in.camera_poses = poses;
+  in.camera_count = 1;
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
   CHECK(stats.new_ids == 3);
-  CHECK(fragsim_controller_step(id, &in, forces, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
   CHECK(stats.new_ids == 0);
   CHECK(fragsim_controller_set_cameras(id, defs, 2) == FRAGSIM_OK);
-  in.camera_poses = poses;
   in.camera_count = 2;
-  CHECK(fragsim_controller_step(id, &in, forces, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
   CHECK(stats.new_ids == 3);
-  CHECK(fragsim_controller_step(id, &in, forces, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
   CHECK(stats.new_ids == 0);
   /* New constants, same count: the state is kept. */
   defs[1].fovy_deg = 75.0;
   CHECK(fragsim_controller_set_cameras(id, defs, 2) == FRAGSIM_OK);
-  CHECK(fragsim_controller_step(id, &in, forces, &stats) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
   CHECK(stats.new_ids == 0);
+  /* Back to one camera: every fragment forgotten again. */
+  CHECK(fragsim_controller_set_cameras(id, defs, 1) == FRAGSIM_OK);
+  in.camera_count = 1;
+  CHECK(fragsim_controller_step(id, &in, f, 3, forces, &stats) == FRAGSIM_OK);
+  CHECK(stats.new_ids == 3);
   fragsim_controller_destroy(id);
 }
 
@@ -325,11 +326,11 @@ static void test_camera_count_change_forgets(void) {
  * camera, and the conflicts reported over the run (*conflicts), the forces' finiteness (*finite)
  * and the fragments pushed at least once (*pushed). with_forces 0: the engine ignores the forces.
  */
-static int run_blast(const fragsim_camera* start, int n_cams, fragsim_vec3 centre,
-                     fragsim_vec3 target, double spread_m, uint64_t seed, int with_forces,
-                     int* conflicts, int* finite, int* pushed) {
+static int run_blast(const camera* start, int n_cams, fragsim_vec3 centre, fragsim_vec3 target,
+                     double spread_m, uint64_t seed, int with_forces, int* conflicts, int* finite,
+                     int* pushed) {
   static world w;
-  fragsim_camera cams[2];
+  camera cams[2];
   fragsim_camera_def defs[2];
   fragsim_camera_pose poses[2];
   const double dt_s = 1.0 / 60.0;
@@ -339,12 +340,10 @@ static int run_blast(const fragsim_camera* start, int n_cams, fragsim_vec3 centr
   blast(&w, centre, target, spread_m, seed);
   for (k = 0; k < n_cams; ++k) {
     cams[k] = start[k];
-    defs[k] = def_of(&cams[k]);
+    defs[k] = cams[k].def;
   }
   CHECK(fragsim_controller_set_cameras(id, defs, n_cams) == FRAGSIM_OK);
   in.ground_height_m = 0.0;
-  in.fragments = w.f;
-  in.fragment_count = N_FRAGMENTS;
   in.camera_poses = poses;
   in.camera_count = n_cams;
   *conflicts = 0;
@@ -353,8 +352,8 @@ static int run_blast(const fragsim_camera* start, int n_cams, fragsim_vec3 centr
   for (step = 0; step < N_STEPS; ++step) {
     fragsim_step_stats stats;
     in.time_s = step * (1.0 / 60.0);
-    for (k = 0; k < n_cams; ++k) poses[k] = pose_of(&cams[k]);
-    CHECK(fragsim_controller_step(id, &in, w.force_N, &stats) == FRAGSIM_OK);
+    for (k = 0; k < n_cams; ++k) poses[k] = cams[k].pose;
+    CHECK(fragsim_controller_step(id, &in, w.f, N_FRAGMENTS, w.force_N, &stats) == FRAGSIM_OK);
     *conflicts += stats.conflicts;
     *pushed += stats.pushed > 0;
     if (stats.conflicts > 0) CHECK(stats.first_conflict >= 0 && stats.first_conflict < N_FRAGMENTS);
@@ -362,7 +361,7 @@ static int run_blast(const fragsim_camera* start, int n_cams, fragsim_vec3 centr
     if (!with_forces) memset(w.force_N, 0, sizeof w.force_N);
     advance(&w, cams, n_cams, dt_s);
     for (k = 0; k < n_cams; ++k) {
-      cams[k].eye_m = add(cams[k].eye_m, scale(cams[k].velocity_mps, dt_s));
+      cams[k].pose.eye_m = add(cams[k].pose.eye_m, scale(cams[k].pose.velocity_mps, dt_s));
     }
   }
   for (i = 0; i < N_FRAGMENTS; ++i) touched += w.touched_any[i];
@@ -373,7 +372,7 @@ static int run_blast(const fragsim_camera* start, int n_cams, fragsim_vec3 centr
 static void test_two_eyes_stay_clean(void) {
   /* A headset walking into the blast at 1.5 m/s: eyes 6.4 cm apart, each with its own near
    * rectangle, one body each (the headset's half sizes), looking down -z. */
-  fragsim_camera eyes[2];
+  camera eyes[2];
   int conflicts, finite, pushed, seed;
   const fragsim_vec3 walk = v3(0.0, 0.0, -1.5);
   eyes[0] = camera_at(v3(-0.032, 1.6, 0.0), 1.0, walk);
@@ -403,7 +402,7 @@ static void test_facing_cameras_report_conflicts(void) {
    * (depth) by 0.1 m (height), at the height where A's top edge meets B's bottom edge: A's least
    * push is up, into B's box, and B's is down, into A's. Only a push past B's top or A's bottom
    * clears both. */
-  fragsim_camera cams[2];
+  camera cams[2];
   int conflicts, finite, pushed, hits_free, hits;
   const fragsim_vec3 centre = v3(-6.0, 1.75, -0.2);
   const fragsim_vec3 target = v3(0.0, 1.75, -0.2);

@@ -22,18 +22,26 @@ typedef struct Body {
   uint64_t id;
 } Body;
 
+/* The one camera of every controller here (the default one), walking toward the blast. */
+static fragsim_camera_pose g_pose;
+
 static fragsim_controller_id make(fragsim_strategy strategy) {
   fragsim_controller_def def = fragsim_default_controller_def();
+  fragsim_camera_def camera = fragsim_default_camera_def();
   fragsim_controller_id id;
   def.strategy = strategy;
   CHECK(fragsim_controller_create(&def, &id, NULL, 0) == FRAGSIM_OK);
+  CHECK(fragsim_controller_set_cameras(id, &camera, 1) == FRAGSIM_OK);
   return id;
 }
 
 static fragsim_step_input blast_input(void) {
   fragsim_step_input in = fragsim_default_step_input();
   in.ground_height_m = -1.5;
-  in.camera.velocity_mps.z = -1.0;
+  g_pose = fragsim_default_camera_pose();
+  g_pose.velocity_mps.z = -1.0;
+  in.camera_poses = &g_pose;
+  in.camera_count = 1;
   return in;
 }
 
@@ -65,7 +73,7 @@ static void blast(fragsim_fragment* f, int exact) {
       v[1] = -p[1] / arrive + 4.905 * arrive;
       v[2] = 12.0;
     }
-    memset(&f[i], 0, sizeof f[i]);
+    f[i] = fragsim_default_fragment();
     for (k = 0; k < 3; ++k) {
       if (exact) {
         p[k] = floor(p[k] * 1024.0 + 0.5) / 1024.0;
@@ -102,8 +110,7 @@ static void to_bodies(const fragsim_fragment* f, Body* b) {
 
 /* The arrays over Body, forces as 3 floats with a 4th float left alone (stride 16). */
 static fragsim_fragment_arrays float_arrays(const Body* b, float* forces) {
-  fragsim_fragment_arrays a;
-  memset(&a, 0, sizeof a);
+  fragsim_fragment_arrays a = fragsim_default_fragment_arrays();
   a.scalar_type = FRAGSIM_SCALAR_FLOAT;
   a.position_m = b[0].position; /* no cast: the fields are void pointers */
   a.position_stride_bytes = sizeof *b;
@@ -152,10 +159,8 @@ static void exact_inputs_give_rounded_double_forces(void) {
       fragsim_fragment_arrays a = float_arrays(b, forces);
       fragsim_step_stats sd, sf;
       in.time_s = step / 60.0;
-      in.fragments = f;
-      in.fragment_count = count;
       for (i = 0; i < 4 * kCount; ++i) forces[i] = -7.0f;
-      CHECK(fragsim_controller_step(d, &in, expected, &sd) == FRAGSIM_OK);
+      CHECK(fragsim_controller_step(d, &in, f, count, expected, &sd) == FRAGSIM_OK);
       CHECK(fragsim_controller_step_arrays(fl, &in, &a, count, &sf) == FRAGSIM_OK);
       CHECK(sd.pushed == sf.pushed && sd.candidates == sf.candidates);
       pushed += sd.pushed;
@@ -207,9 +212,7 @@ static void rounded_blast_stays_within_tolerance(void) {
   for (step = 0; step < 3; ++step) {
     fragsim_step_stats sd, sf;
     in.time_s = step / 60.0;
-    in.fragments = f;
-    in.fragment_count = kCount;
-    CHECK(fragsim_controller_step(d, &in, expected, &sd) == FRAGSIM_OK);
+    CHECK(fragsim_controller_step(d, &in, f, kCount, expected, &sd) == FRAGSIM_OK);
     CHECK(fragsim_controller_step_arrays(fl, &in, &a, kCount, &sf) == FRAGSIM_OK);
     CHECK(sd.pushed == sf.pushed);
     pushed += sd.pushed;
@@ -256,13 +259,12 @@ static void refusals_and_skips(void) {
   to_bodies(f, b);
   CHECK(isnan(b[3].position[1]));
   a = float_arrays(b, forces);
-  in.fragments = f;
-  in.fragment_count = kCount;
   for (i = 0; i < 4 * kCount; ++i) forces[i] = 7.0f;
-  CHECK(fragsim_controller_step(d, &in, expected, &sd) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(d, &in, f, kCount, expected, &sd) == FRAGSIM_OK);
   CHECK(fragsim_controller_step_arrays(fl, &in, &a, kCount, &sf) == FRAGSIM_OK);
   CHECK(sd.skipped == 1 && sd.first_skipped == 3);
   CHECK(sf.skipped == 1 && sf.first_skipped == 3);
+  CHECK((sf.warnings & FRAGSIM_WARNING_SKIPPED) != 0);
   CHECK(forces[12] == 0.0f && forces[13] == 0.0f && forces[14] == 0.0f);
   for (i = 0; i < kCount; ++i) {
     mismatches +=

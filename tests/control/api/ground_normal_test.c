@@ -45,21 +45,26 @@ static fragsim_vec3 permute(const Permutation* p, fragsim_vec3 v) {
 
 /* The y-up scene at a step: a blast 6 m ahead of a camera walking toward it, ground 1.6 m below,
  * fragments thrown every way and a quarter of them aimed at the lens; ids 0..kCount-1, the last
- * 30 absent at step 3. */
-static void scene(int step, fragsim_step_input* in, fragsim_fragment* f) {
+ * 30 absent at step 3. The camera's pose goes to *pose, which the input points to; returns the
+ * fragment count. */
+static int32_t scene(int step, fragsim_step_input* in, fragsim_camera_pose* pose,
+                     fragsim_fragment* f) {
   int i;
   const double t = 0.3 + step / 60.0; /* 0.3 s after the blast: the nearest are 2 m away */
   *in = fragsim_default_step_input();
   in->time_s = step / 60.0;
   in->ground_height_m = -1.6;
-  in->camera.velocity_mps.z = -1.0;
-  in->camera.eye_m.z = -1.0 * step / 60.0;
+  *pose = fragsim_default_camera_pose();
+  pose->velocity_mps.z = -1.0;
+  pose->eye_m.z = -1.0 * step / 60.0;
+  in->camera_poses = pose;
+  in->camera_count = 1;
   for (i = 0; i < kCount; ++i) {
     const double a = 2.399963 * i;
     const double z = 1.0 - 2.0 * (i + 0.5) / kCount;
     const double r = sqrt(1.0 - z * z);
     const double vx = 7.0 * r * cos(a), vy = 7.0 * r * sin(a) + 2.0, vz = 7.0 * z + 6.0;
-    memset(&f[i], 0, sizeof f[i]);
+    f[i] = fragsim_default_fragment();
     f[i].position_m.x = 0.2 * cos(1.7 * i) + vx * t;
     f[i].position_m.y = 0.2 * sin(1.3 * i) + vy * t - 4.905 * t * t;
     f[i].position_m.z = -6.0 + vz * t;
@@ -79,23 +84,22 @@ static void scene(int step, fragsim_step_input* in, fragsim_fragment* f) {
     f[i].mass_kg = 0.3 + 0.002 * i;
     f[i].id = (uint64_t)i;
   }
-  in->fragments = f;
-  in->fragment_count = step == 3 ? kCount - 30 : kCount;
+  return step == 3 ? kCount - 30 : kCount;
 }
 
 /* Every vector of the input through `map` (the camera's body is along its own axes: kept). */
 typedef fragsim_vec3 (*Map)(const void* how, fragsim_vec3 v);
 static void map_scene(const void* how, Map map, fragsim_vec3 normal, fragsim_step_input* in,
-                      fragsim_fragment* f) {
+                      fragsim_camera_pose* pose, fragsim_fragment* f, int32_t count) {
   int i;
   in->ground_normal = normal;
   in->gravity_mps2 = map(how, in->gravity_mps2);
-  in->camera.eye_m = map(how, in->camera.eye_m);
-  in->camera.right = map(how, in->camera.right);
-  in->camera.up = map(how, in->camera.up);
-  in->camera.forward = map(how, in->camera.forward);
-  in->camera.velocity_mps = map(how, in->camera.velocity_mps);
-  for (i = 0; i < in->fragment_count; ++i) {
+  pose->eye_m = map(how, pose->eye_m);
+  pose->right = map(how, pose->right);
+  pose->up = map(how, pose->up);
+  pose->forward = map(how, pose->forward);
+  pose->velocity_mps = map(how, pose->velocity_mps);
+  for (i = 0; i < count; ++i) {
     f[i].position_m = map(how, f[i].position_m);
     f[i].velocity_mps = map(how, f[i].velocity_mps);
   }
@@ -119,8 +123,10 @@ enum { kConfigs = 5 };
 
 static fragsim_controller_id make(int config) {
   fragsim_controller_def def = def_for(config);
+  fragsim_camera_def camera = fragsim_default_camera_def();
   fragsim_controller_id id;
   CHECK(fragsim_controller_create(&def, &id, NULL, 0) == FRAGSIM_OK);
+  CHECK(fragsim_controller_set_cameras(id, &camera, 1) == FRAGSIM_OK);
   return id;
 }
 
@@ -141,15 +147,18 @@ static double compare(int config, const void* how, Map map, fragsim_vec3 normal,
   int step, i;
   for (step = 0; step < kSteps; ++step) {
     fragsim_step_input iy, im;
+    fragsim_camera_pose py, pm;
     fragsim_step_stats sy, sm;
-    scene(step, &iy, f);
-    scene(step, &im, g);
-    map_scene(how, map, normal, &im, g);
-    CHECK(fragsim_controller_step(y, &iy, fy, &sy) == FRAGSIM_OK);
-    CHECK(fragsim_controller_step(m, &im, fm, &sm) == FRAGSIM_OK);
+    const int32_t count = scene(step, &iy, &py, f);
+    scene(step, &im, &pm, g);
+    map_scene(how, map, normal, &im, &pm, g, count);
+    CHECK(fragsim_controller_step(y, &iy, f, count, fy, &sy) == FRAGSIM_OK);
+    CHECK(fragsim_controller_step(m, &im, g, count, fm, &sm) == FRAGSIM_OK);
     CHECK(sy.pushed == sm.pushed && sy.candidates == sm.candidates && sy.capped == sm.capped);
+    /* Below the ground is along the normal: the same fragments in every frame. */
+    CHECK(sy.below_ground == sm.below_ground && sy.first_below_ground == sm.first_below_ground);
     *pushes += sy.pushed;
-    for (i = 0; i < iy.fragment_count; ++i) {
+    for (i = 0; i < count; ++i) {
       const fragsim_vec3 want = map(how, fy[i]);
       const fragsim_vec3 d = {fm[i].x - want.x, fm[i].y - want.y, fm[i].z - want.z};
       const double e = norm(d) / (f[i].mass_kg * 50.0);
@@ -238,18 +247,21 @@ static void a_new_normal_forgets_the_fragments(void) {
   for (config = 0; config < 3; ++config) { /* edge-min, with max_solves, edge */
     fragsim_controller_id a = make(config), b = make(config), c = make(config);
     fragsim_step_input in;
+    fragsim_camera_pose pose;
     fragsim_step_stats sa, sb;
     int step, differs = 0;
+    int32_t count;
     for (step = 0; step < 4; ++step) {
-      scene(step, &in, f);
-      CHECK(fragsim_controller_step(a, &in, kept, NULL) == FRAGSIM_OK);
-      CHECK(fragsim_controller_step(c, &in, kept, NULL) == FRAGSIM_OK);
+      count = scene(step, &in, &pose, f);
+      CHECK(fragsim_controller_step(a, &in, f, count, kept, NULL) == FRAGSIM_OK);
+      CHECK(fragsim_controller_step(c, &in, f, count, kept, NULL) == FRAGSIM_OK);
     }
-    scene(4, &in, f);
-    CHECK(fragsim_controller_step(c, &in, kept, NULL) == FRAGSIM_OK); /* no change: state kept */
-    map_scene(&kAxes[2], by_permutation, kAxes[2].normal, &in, f);
-    CHECK(fragsim_controller_step(a, &in, changed, &sa) == FRAGSIM_OK);
-    CHECK(fragsim_controller_step(b, &in, fresh, &sb) == FRAGSIM_OK);
+    count = scene(4, &in, &pose, f);
+    /* no change: state kept */
+    CHECK(fragsim_controller_step(c, &in, f, count, kept, NULL) == FRAGSIM_OK);
+    map_scene(&kAxes[2], by_permutation, kAxes[2].normal, &in, &pose, f, count);
+    CHECK(fragsim_controller_step(a, &in, f, count, changed, &sa) == FRAGSIM_OK);
+    CHECK(fragsim_controller_step(b, &in, f, count, fresh, &sb) == FRAGSIM_OK);
     CHECK(sa.new_ids == kCount && sa.dropped_ids == kCount - 30); /* step 3 had kCount - 30 */
     CHECK(memcmp(changed, fresh, sizeof fresh) == 0);
     {
@@ -265,9 +277,9 @@ static void a_new_normal_forgets_the_fragments(void) {
      * fragments here had no force yet, so for it only the equality above is telling. */
     if (config == 2) CHECK(differs > 0);
     /* The next step, same normal: the usual kept state, no new ids. */
-    scene(5, &in, f);
-    map_scene(&kAxes[2], by_permutation, kAxes[2].normal, &in, f);
-    CHECK(fragsim_controller_step(a, &in, changed, &sa) == FRAGSIM_OK);
+    count = scene(5, &in, &pose, f);
+    map_scene(&kAxes[2], by_permutation, kAxes[2].normal, &in, &pose, f, count);
+    CHECK(fragsim_controller_step(a, &in, f, count, changed, &sa) == FRAGSIM_OK);
     CHECK(sa.new_ids == 0);
     fragsim_controller_destroy(a);
     fragsim_controller_destroy(b);
@@ -280,21 +292,24 @@ static void a_new_normal_forgets_the_fragments(void) {
 static void normal_is_checked(void) {
   fragsim_controller_id c = make(0);
   fragsim_step_input in = fragsim_default_step_input();
+  fragsim_camera_pose pose = fragsim_default_camera_pose();
   CHECK(in.ground_normal.x == 0.0 && in.ground_normal.y == 1.0 && in.ground_normal.z == 0.0);
-  CHECK(fragsim_controller_step(c, &in, NULL, NULL) == FRAGSIM_OK);
+  in.camera_poses = &pose;
+  in.camera_count = 1;
+  CHECK(fragsim_controller_step(c, &in, NULL, 0, NULL, NULL) == FRAGSIM_OK);
   in.ground_normal.y = 0.0;
-  CHECK(fragsim_controller_step(c, &in, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(c, &in, NULL, 0, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(fragsim_controller_last_error(c), "ground_normal has length 0") != NULL);
   CHECK(strstr(fragsim_controller_last_error(c), "fragsim_default_step_input") != NULL);
   in.ground_normal.y = 1.01;
-  CHECK(fragsim_controller_step(c, &in, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(c, &in, NULL, 0, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   in.ground_normal.y = NAN;
-  CHECK(fragsim_controller_step(c, &in, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
+  CHECK(fragsim_controller_step(c, &in, NULL, 0, NULL, NULL) == FRAGSIM_ERROR_INVALID_ARGUMENT);
   CHECK(strstr(fragsim_controller_last_error(c), "ground_normal.y") != NULL);
   in.ground_normal.x = 0.6;
   in.ground_normal.y = 0.0;
   in.ground_normal.z = 0.8 + 5e-7;
-  CHECK(fragsim_controller_step(c, &in, NULL, NULL) == FRAGSIM_OK);
+  CHECK(fragsim_controller_step(c, &in, NULL, 0, NULL, NULL) == FRAGSIM_OK);
   fragsim_controller_destroy(c);
 }
 

@@ -20,7 +20,7 @@ static void fragments_at(int step, fragsim_fragment* f) {
     const double a = 2.399963 * i;
     const double vx = 0.4 * cos(a);
     const double vy = 0.4 * sin(a) + 2.45;
-    memset(&f[i], 0, sizeof f[i]);
+    f[i] = fragsim_default_fragment();
     f[i].velocity_mps.x = vx;
     f[i].velocity_mps.y = vy - 9.81 * t;
     f[i].velocity_mps.z = 10.0;
@@ -37,6 +37,8 @@ static void fragments_at(int step, fragsim_fragment* f) {
  * reference run, when it could be recorded). */
 static int run(int record) {
   fragsim_controller_def def = fragsim_default_controller_def();
+  fragsim_camera_def camera = fragsim_default_camera_def();
+  fragsim_camera_pose pose = fragsim_default_camera_pose();
   fragsim_controller_id c;
   fragsim_fragment f[kFragments];
   fragsim_vec3 forces[kFragments];
@@ -44,12 +46,13 @@ static int run(int record) {
   int step;
   int bad = 0;
   if (fragsim_controller_create(&def, &c, NULL, 0) != FRAGSIM_OK) return 1;
+  if (fragsim_controller_set_cameras(c, &camera, 1) != FRAGSIM_OK) bad = 1;
+  in.camera_poses = &pose;
+  in.camera_count = 1;
   for (step = 0; step < kSteps; ++step) {
     fragments_at(step, f);
     in.time_s = step / 60.0;
-    in.fragments = f;
-    in.fragment_count = kFragments;
-    if (fragsim_controller_step(c, &in, forces, NULL) != FRAGSIM_OK) bad = 1;
+    if (fragsim_controller_step(c, &in, f, kFragments, forces, NULL) != FRAGSIM_OK) bad = 1;
     if (record) {
       memcpy(g_expected[step], forces, sizeof forces);
     } else if (memcmp(g_expected[step], forces, sizeof forces) != 0) {
@@ -58,7 +61,9 @@ static int run(int record) {
   }
   if (fragsim_controller_destroy(c) != FRAGSIM_OK) bad = 1;
   /* Its id is stale now, whatever the other threads create meanwhile. */
-  if (fragsim_controller_step(c, &in, forces, NULL) != FRAGSIM_ERROR_STALE_ID) bad = 1;
+  if (fragsim_controller_step(c, &in, f, kFragments, forces, NULL) != FRAGSIM_ERROR_STALE_ID) {
+    bad = 1;
+  }
   return bad;
 }
 

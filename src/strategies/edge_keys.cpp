@@ -1,4 +1,6 @@
-#include "strategies/edge_params.hpp"
+#include "strategies/edge_keys.hpp"
+
+#include "strategies/range_keys.hpp"
 
 namespace fragsim {
 
@@ -6,9 +8,9 @@ const ParamSpec<EdgeParams>& edge_param_spec() {
   using namespace settings;
   using P = EdgeParams;
   static const ParamSpec<P> spec{
-      {real("k", "N m s^2", "gain of the thesis force (3.4)", &P::k, closed(0, 1e12)),
-       real("a_max_mps2", "m/s^2", "cap on the imposed acceleration", &P::a_max_mps2,
-            closed(0, 1e9)),
+      {ranged_real(kEdgeRanges, "k", "N m s^2", "gain of the thesis force (3.4)", &P::k),
+       ranged_real(kEdgeRanges, "a_max_mps2", "m/s^2", "cap on the imposed acceleration",
+                   &P::a_max_mps2),
        choice("predictor", "path used to predict", &P::predictor,
               {{"thesis", Predictor::kThesis}, {"discrete", Predictor::kDiscrete}}),
        choice("reach", "the camera's reachable region", &P::reach,
@@ -18,10 +20,10 @@ const ParamSpec<EdgeParams>& edge_param_spec() {
        choice(
            "replan", "which non-candidates are re-examined", &P::replan,
            {{"never", Replan::kNever}, {"contact", Replan::kContact}, {"always", Replan::kAlways}}),
-       real("horizon_cap_s", "s",
-            "t_G's fallback and cap: a path that never falls through the horizon height is "
-            "examined this far ahead (a game has no scene end)",
-            &P::horizon_cap_s, open_closed(0, 3600))},
+       ranged_real(kEdgeRanges, "horizon_cap_s", "s",
+                   "t_G's fallback and cap: a path that never falls through the horizon height is "
+                   "examined this far ahead (a game has no scene end)",
+                   &P::horizon_cap_s)},
       {},
       // The path model and the re-examination are edge's own trade of time against error.
       {{"predictor", "predictor thesis", {{"edge.predictor", "thesis"}}},

@@ -1,0 +1,12 @@
+#pragma once
+// `edge`'s scene keys ([edge]): the library's EdgeParams as text, each number's range the
+// library's (kEdgeRanges).
+
+#include "strategies/edge_params.hpp"
+#include "strategies/param_spec.hpp"
+
+namespace fragsim {
+
+const ParamSpec<EdgeParams>& edge_param_spec();
+
+}  // namespace fragsim
