@@ -85,7 +85,7 @@ void operator delete(void* p) noexcept {
 void operator delete(void* p, std::size_t) noexcept {
   std::free(p);
 }
-// The strategies' std::pmr vectors may come through the aligned forms.
+// The strategies' vectors may come through the aligned forms.
 void* operator new(std::size_t size, std::align_val_t align) {
   if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
   const auto a = static_cast<std::size_t>(align);

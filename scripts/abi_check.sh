@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The controller library's ABI against its committed baseline (src/control/abi/), with libabigail.
 #
-#   scripts/abi_check.sh [--update] [--work DIR] [--current FILE] [--baseline FILE]
+#   scripts/abi_check.sh [--update] [--work DIR | --prefix DIR] [--current FILE] [--baseline FILE]
 #
 # Builds src/control alone with debug information (the types are read from it; no other flag
 # changes the ABI), installs it into a temporary prefix, runs abidw on the installed
@@ -10,6 +10,8 @@
 #   --update         writes the baseline instead of comparing (after a release that may change it:
 #                    a new major; never within 1.x)
 #   --work DIR       builds there, kept between runs (default: a temporary folder)
+#   --prefix DIR     reads the library installed in DIR instead of building one (it must carry
+#                    debug information: Control.Library.BuildsAlone installs its gcc build so)
 #   --current FILE   compares FILE, an abidw output, instead of building (the check's own test)
 #   --baseline FILE  compares against FILE instead of the committed baseline
 #
@@ -26,11 +28,12 @@
 # Exit 0: compatible; 1: incompatible or an error; 77: abidw or abidiff is not installed.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-update=0 work="" current="" baseline=""
+update=0 work="" prefix="" current="" baseline=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --update) update=1 ;;
     --work) work=$2; shift ;;
+    --prefix) prefix=$2; shift ;;
     --current) current=$2; shift ;;
     --baseline) baseline=$2; shift ;;
     *) echo "abi_check: unknown argument $1" >&2; exit 2 ;;
@@ -55,14 +58,16 @@ baseline=${baseline:-$root/src/control/abi/fragsim_control-$major.0.abi}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if [[ -z $current ]]; then
-  work=${work:-$tmp/build}
-  prefix=$tmp/prefix
-  # Debug: -O0 -g, the quickest build with the types in it.
-  # The build's output is shown only when it fails.
-  quiet() { "$@" >"$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }; }
-  quiet cmake -S "$root/src/control" -B "$work" -DCMAKE_BUILD_TYPE=Debug
-  quiet cmake --build "$work" --target fragsim_control_shared fragsim_control_static -j"$(nproc)"
-  quiet cmake --install "$work" --prefix "$prefix" --component control
+  if [[ -z $prefix ]]; then
+    work=${work:-$tmp/build}
+    prefix=$tmp/prefix
+    # Debug: -O0 -g, the quickest build with the types in it.
+    # The build's output is shown only when it fails.
+    quiet() { "$@" >"$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }; }
+    quiet cmake -S "$root/src/control" -B "$work" -DCMAKE_BUILD_TYPE=Debug
+    quiet cmake --build "$work" --target fragsim_control_shared fragsim_control_static -j"$(nproc)"
+    quiet cmake --install "$work" --prefix "$prefix" --component control
+  fi
   library=$prefix/lib/libfragsim_control.so.$major
   [[ -f $library ]] || { echo "abi_check: $library not installed (soname?)" >&2; exit 1; }
   current=$tmp/current.abi

@@ -9,6 +9,7 @@ scripts/setup.sh release
 scripts/install_packages.sh chromium chromium-driver python3 # the Browser.ReportLoads test
 # clang: the library built alone with clang and ThreadSanitizer (Control.Library.BuildsAlone)
 scripts/install_packages.sh clang libclang-rt-dev abigail-tools # abidw, abidiff: Control.Library.Abi*
+scripts/install_packages.sh emscripten # the WebAssembly build (Web.*: scripts/web_build.sh)
 ctest --preset release -j"$jobs"
 scripts/slurm/test.sh build/release/fragsim # a 4-task Slurm job array and its merge, ~10 s
 scripts/setup.sh asan

@@ -288,6 +288,22 @@ def check_viewer(driver, screenshot):
     return problems
 
 
+def shut_down(driver, proc, profile):
+    """Ends the browser session, chromedriver and the profile folder, whatever state they are in."""
+    if driver.session:
+        try:
+            driver.call("DELETE", driver.s(""), timeout=30)
+        except (RuntimeError, OSError):
+            pass
+    proc.terminate()
+    try:
+        proc.wait(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        proc.wait()
+    shutil.rmtree(profile, ignore_errors=True)
+
+
 def check(page, screenshot, width, chromium, chromedriver):
     page = pathlib.Path(page).resolve()
     if not page.is_file():
@@ -362,18 +378,7 @@ def check(page, screenshot, width, chromium, chromedriver):
             tail = log.read().strip().splitlines()[-5:]
         problems += ["chromedriver: " + line for line in tail]
     finally:
-        if driver.session:
-            try:
-                driver.call("DELETE", driver.s(""), timeout=30)
-            except (RuntimeError, OSError):
-                pass
-        proc.terminate()
-        try:
-            proc.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait()
-        shutil.rmtree(profile, ignore_errors=True)
+        shut_down(driver, proc, profile)
     return problems, facts
 
 

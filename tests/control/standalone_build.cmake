@@ -71,7 +71,7 @@ endfunction()
 function(build_library_alone name cxx cc)
   run("configure src/control alone (${name})" ${CMAKE_COMMAND} -S ${SOURCE_DIR}
     -B ${WORK_DIR}/${name} -DCMAKE_CXX_COMPILER=${cxx} -DCMAKE_BUILD_TYPE=Release
-    -DFRAGSIM_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
+    -DFRAGSIM_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_FLAGS=${ARGN}"
     -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=${GUARD})
   run("build (${name})" ${CMAKE_COMMAND} --build ${WORK_DIR}/${name} --parallel 2)
   check_include_dirs(${WORK_DIR}/${name})
@@ -95,9 +95,14 @@ function(build_library_alone name cxx cc)
 endfunction()
 
 file(REMOVE_RECURSE ${WORK_DIR})
-build_library_alone(gcc ${CXX} ${CC})
+# gcc's with debug information (which changes no instruction): Control.Library.AbiStable reads
+# the ABI from this install, kept when the rest of the work folder is removed.
+build_library_alone(gcc ${CXX} ${CC} -g)
+# clang's build without Eigen's vectorisation: a sum over a 3-vector must not depend on the
+# vector width the library is compiled for (geometry/vec3_sums.hpp), so its replays must match
+# the tool's as the SSE2 build's do.
 if(CLANG_CC AND CLANG_CXX)
-  build_library_alone(clang ${CLANG_CXX} ${CLANG_CC})
+  build_library_alone(clang ${CLANG_CXX} ${CLANG_CC} -DEIGEN_DONT_VECTORIZE)
 endif()
 run("configure examples/minimal_c on the install" ${CMAKE_COMMAND} -S ${EXAMPLE_DIR}
   -B ${WORK_DIR}/example -DCMAKE_C_COMPILER=${CC} -DCMAKE_PREFIX_PATH=${WORK_DIR}/gcc-prefix
@@ -123,4 +128,7 @@ if(CLANG_CC AND CLANG_CXX)
     TSAN_OPTIONS=halt_on_error=1:abort_on_error=0 ${CMAKE_CTEST_COMMAND} --test-dir ${WORK_DIR}/tsan
     --output-on-failure)
 endif()
-file(REMOVE_RECURSE ${WORK_DIR})
+# Everything but gcc's install (for Control.Library.AbiStable).
+file(GLOB work_entries ${WORK_DIR}/*)
+list(REMOVE_ITEM work_entries ${WORK_DIR}/gcc-prefix)
+file(REMOVE_RECURSE ${work_entries})

@@ -25,7 +25,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <memory_resource>
 #include <vector>
 
 #include "api/hook_resource.hpp"
@@ -35,6 +34,7 @@
 #include "api/task_system.hpp"
 #include "fragsim/control.h"
 #include "geometry/fragment_state.hpp"
+#include "memory/memory_resource.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fragsim {
@@ -48,7 +48,7 @@ class GroundFrame;
 
 // Destroys a strategy allocated from a controller's resource.
 struct StrategyDelete {
-  std::pmr::memory_resource* mem = nullptr;
+  MemoryResource* mem = nullptr;
   std::size_t size = 0;
   std::size_t align = 0;
   void operator()(Strategy* s) const noexcept;
@@ -57,7 +57,7 @@ using StrategyPtr = std::unique_ptr<Strategy, StrategyDelete>;
 
 // One camera's strategy, its answer of the step, and its constants when set on the controller.
 struct CameraSlot {
-  explicit CameraSlot(std::pmr::memory_resource* mem) : out(mem) {}
+  explicit CameraSlot(MemoryResource* mem) : out(mem) {}
   StrategyPtr strategy;
   EdgeStrategy* edge = nullptr;         // the same object, when it keeps per-fragment state
   EdgeMinStrategy* edge_min = nullptr;  // likewise (its budget's last forces)
@@ -117,14 +117,14 @@ class Controller {
   void undo_carry_over(int cameras);
 
   HookResource hook_;  // first: everything below is allocated from it
-  std::pmr::memory_resource* mem_ = &hook_;
+  MemoryResource* mem_ = &hook_;
   fragsim_controller_def def_;
   // The game's workers, when the def gives a task system.
   TaskSystem tasks_;
   const ParallelFor* parallel_ = nullptr;
   // slots_[0] always; more from set_cameras (room for FRAGSIM_MAX_CAMERAS made at creation, so
   // the slots never move).
-  std::pmr::vector<CameraSlot> slots_{mem_};
+  ResourceVector<CameraSlot> slots_{mem_};
   int camera_count_ = 0;   // cameras set by set_cameras (0: none yet, and a step is refused)
   int last_cameras_ = 1;   // cameras of the last successful step
   JointPush joint_{mem_};  // several cameras' pushes joined
@@ -135,11 +135,10 @@ class Controller {
   // Work space kept between calls. The fragments usable this step, in the caller's order with the
   // skipped ones left out: their states (in the strategies' frame), their places in the caller's
   // arrays and their ids.
-  std::pmr::vector<FragmentState> states_{mem_};
-  std::pmr::vector<std::int32_t> caller_index_{mem_};
-  std::pmr::vector<std::uint64_t> ids_now_{mem_};
-  std::pmr::vector<int> previous_{
-      mem_};              // this step's fragment k was previous_[k] last step, or -1
+  ResourceVector<FragmentState> states_{mem_};
+  ResourceVector<std::int32_t> caller_index_{mem_};
+  ResourceVector<std::uint64_t> ids_now_{mem_};
+  ResourceVector<int> previous_{mem_};  // this step's fragment k was previous_[k] last step, or -1
   StepOutput out_{mem_};  // the step's answer: slots_[0].out's for one camera, joint_'s for more
   std::size_t room_ = 0;  // the fragment count reserve() made room for
 
@@ -148,7 +147,7 @@ class Controller {
   // first step is in its frame).
   IdTable ids_[2] = {IdTable(mem_), IdTable(mem_)};
   int last_ = 0;
-  std::pmr::vector<std::uint64_t> last_ids_{mem_};
+  ResourceVector<std::uint64_t> last_ids_{mem_};
   fragsim_vec3 last_normal_ = {0.0, 0.0, 0.0};
   bool has_normal_ = false;
 };

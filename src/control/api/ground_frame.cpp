@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geometry/vec3_sums.hpp"
+
 namespace fragsim::control {
 
 GroundFrame::GroundFrame(const fragsim_vec3& n) {
@@ -42,7 +44,7 @@ Eigen::Vector3d GroundFrame::in(const Eigen::Vector3d& w) const {
   if (permutation_) {
     return {sign_[0] * w[from_[0]], sign_[1] * w[from_[1]], sign_[2] * w[from_[2]]};
   }
-  return {row_[0].dot(w), row_[1].dot(w), row_[2].dot(w)};
+  return {dot3(row_[0], w), dot3(row_[1], w), dot3(row_[2], w)};
 }
 
 Eigen::Vector3d GroundFrame::out(const Eigen::Vector3d& v) const {

@@ -1,21 +1,21 @@
 #pragma once
 // The allocator hook of fragsim_controller_def (alloc_fn, free_fn, alloc_user) as a
-// std::pmr::memory_resource, so that every container a controller owns (its id tables, its work
-// arrays, its strategy's vectors) allocates through the game's hook, and the strategies, which the
-// tool runs with the default resource, need no second code path.
+// MemoryResource, so that every container a controller owns (its id tables, its work arrays, its
+// strategy's vectors) allocates through the game's hook, and the strategies, which the tool runs
+// with the default resource, need no second code path.
 //
-// Without a hook it is the C++ runtime's operator new and delete, called as a `new T[n]` would
-// (the plain operator new for alignments it guarantees, the aligned one beyond): a program that
-// replaces operator new sees every allocation of a hookless controller, as before 0.6.
+// Without a hook it is the default resource (memory/memory_resource.hpp): the C++ runtime's
+// operator new and delete, so a program that replaces operator new sees every allocation of a
+// hookless controller.
 
 #include <cstddef>
-#include <memory_resource>
 
 #include "fragsim/control.h"
+#include "memory/memory_resource.hpp"
 
 namespace fragsim::control {
 
-class HookResource final : public std::pmr::memory_resource {
+class HookResource final : public MemoryResource {
  public:
   // alloc_fn and free_fn both set, or both NULL (the runtime's new and delete); a def with one of
   // them only is refused before this is built.
@@ -23,16 +23,12 @@ class HookResource final : public std::pmr::memory_resource {
       : alloc_(def.alloc_fn), free_(def.free_fn), user_(def.alloc_user) {}
   bool hooked() const { return alloc_ != nullptr; }
 
- private:
   // Throws std::bad_alloc when the hook returns NULL: the containers' own way of failing, which
   // the controller's two-phase step already turns into FRAGSIM_ERROR_OUT_OF_MEMORY.
-  void* do_allocate(std::size_t bytes, std::size_t alignment) override;
-  void do_deallocate(void* p, std::size_t bytes, std::size_t alignment) override;
-  // Memory from one controller's hook is freed through that hook only.
-  bool do_is_equal(const std::pmr::memory_resource& other) const noexcept override {
-    return this == &other;
-  }
+  void* allocate(std::size_t bytes, std::size_t alignment) override;
+  void deallocate(void* p, std::size_t bytes, std::size_t alignment) override;
 
+ private:
   void* (*alloc_)(size_t, size_t, void*);
   void (*free_)(void*, size_t, size_t, void*);
   void* user_;

@@ -8,15 +8,16 @@
 // table as it was (the controller's promise after FRAGSIM_ERROR_OUT_OF_MEMORY).
 
 #include <cstdint>
-#include <memory_resource>
 #include <vector>
+
+#include "memory/memory_resource.hpp"
 
 namespace fragsim::control {
 
 class IdTable {
  public:
   // Its slots are allocated from `mem` (the controller's allocator).
-  explicit IdTable(std::pmr::memory_resource* mem) : slots_(mem) {}
+  explicit IdTable(MemoryResource* mem) : slots_(mem) {}
   // Room for n ids without growing, keeping the ids in the table.
   void reserve(std::size_t n);
   // Empties the table and makes room for n ids without growing.
@@ -48,7 +49,7 @@ class IdTable {
     std::int32_t value = -1;
     std::uint32_t stamp = 0;  // the slot is used when its stamp is generation_
   };
-  std::pmr::vector<Slot> slots_;
+  ResourceVector<Slot> slots_;
   std::uint32_t generation_ = 1;
   std::size_t mask_ = 0;
   std::size_t size_ = 0;

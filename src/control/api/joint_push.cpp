@@ -4,6 +4,7 @@
 #include <new>
 
 #include "fragsim/control.h"
+#include "geometry/vec3_sums.hpp"
 #include "strategies/edge_min_strategy.hpp"
 
 namespace fragsim::control {
@@ -17,12 +18,12 @@ static_assert(FRAGSIM_MAX_CAMERAS <= 8, "one candidate bit per camera");
 // A probe's answer this small against the push so far is rounding: the pushed path grazes the
 // grown box's edge by construction, and the probe's roots see it from either side.
 bool negligible(const Eigen::Vector3d& extra, const Eigen::Vector3d& accel) {
-  return extra.norm() <= 1e-9 * std::max(1.0, accel.norm());
+  return norm3(extra) <= 1e-9 * std::max(1.0, norm3(accel));
 }
 
 }  // namespace
 
-JointPush::JointPush(std::pmr::memory_resource* mem)
+JointPush::JointPush(MemoryResource* mem)
     : mem_(mem), probe_out_(mem), force_N_(mem), owner_(mem), marks_(mem), touched_(mem) {}
 
 JointPush::~JointPush() {
@@ -128,7 +129,7 @@ JointPush::Conflicts JointPush::join(std::span<const StepContext> contexts,
       if (!rounds) {
         force_N_[i] += a.force_N;
         owner_[i] = static_cast<std::int8_t>(j);
-      } else if (owner_[i] < 0 || a.force_N.squaredNorm() > force_N_[i].squaredNorm()) {
+      } else if (owner_[i] < 0 || squared_norm3(a.force_N) > squared_norm3(force_N_[i])) {
         force_N_[i] = a.force_N;
         owner_[i] = static_cast<std::int8_t>(j);
       }
@@ -152,7 +153,7 @@ JointPush::Conflicts JointPush::join(std::span<const StepContext> contexts,
           ++conflicts.count;
           if (conflicts.first < 0 || k < conflicts.first) conflicts.first = k;
         }
-        const double a = accel_mps2.norm();
+        const double a = norm3(accel_mps2);
         if (a > a_max_mps2_) {
           accel_mps2 *= a_max_mps2_ / a;
           marks_[i] |= kCapped;

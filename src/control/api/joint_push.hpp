@@ -21,10 +21,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <memory_resource>
 #include <span>
 #include <vector>
 
+#include "memory/memory_resource.hpp"
 #include "strategies/edge_min_params.hpp"
 #include "strategies/strategy.hpp"
 
@@ -36,7 +36,7 @@ namespace fragsim::control {
 
 class JointPush {
  public:
-  explicit JointPush(std::pmr::memory_resource* mem);
+  explicit JointPush(MemoryResource* mem);
   ~JointPush();
   JointPush(const JointPush&) = delete;
   JointPush& operator=(const JointPush&) = delete;
@@ -68,16 +68,16 @@ class JointPush {
               Eigen::Vector3d& accel_mps2);
   void touch(int k);
 
-  std::pmr::memory_resource* mem_;
+  MemoryResource* mem_;
   EdgeMinStrategy* probe_ = nullptr;  // from mem_
   double a_max_mps2_ = 0.0;
   StepOutput probe_out_;
   // Per fragment, reset after each join (only the entries in touched_): the force so far, the
   // camera of the largest push (-1: none), and marks (bit j: camera j's candidate; kCapped).
-  std::pmr::vector<Eigen::Vector3d> force_N_;
-  std::pmr::vector<std::int8_t> owner_;
-  std::pmr::vector<std::uint16_t> marks_;
-  std::pmr::vector<std::int32_t> touched_;
+  ResourceVector<Eigen::Vector3d> force_N_;
+  ResourceVector<std::int8_t> owner_;
+  ResourceVector<std::uint16_t> marks_;
+  ResourceVector<std::int32_t> touched_;
 };
 
 }  // namespace fragsim::control

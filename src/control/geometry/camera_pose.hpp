@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "geometry/frustum.hpp"
+#include "geometry/vec3_sums.hpp"
 
 namespace fragsim {
 
@@ -33,11 +34,11 @@ struct CameraPose {
   // World point to camera coordinates: x along right, y along up, z = depth along forward.
   Eigen::Vector3d to_camera(const Eigen::Vector3d& world_m) const {
     const Eigen::Vector3d d = world_m - eye_m;
-    return {d.dot(right), d.dot(up), d.dot(forward)};
+    return {dot3(d, right), dot3(d, up), dot3(d, forward)};
   }
   // World direction to camera axes (no translation).
   Eigen::Vector3d dir_to_camera(const Eigen::Vector3d& world_dir) const {
-    return {world_dir.dot(right), world_dir.dot(up), world_dir.dot(forward)};
+    return {dot3(world_dir, right), dot3(world_dir, up), dot3(world_dir, forward)};
   }
   // Rotation whose columns are right, up, -forward (a right-handed camera frame).
   Eigen::Matrix3d rotation() const {

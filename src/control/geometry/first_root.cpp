@@ -2,18 +2,18 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
-#include <memory_resource>
 #include <new>
 #include <span>
 #include <tuple>
 #include <vector>
 
 #include "geometry/work_space.hpp"
+#include "memory/memory_resource.hpp"
 
 namespace fragsim {
 namespace {
@@ -101,6 +101,15 @@ bool near_zero(const Sample& s) {
   return std::abs(s.p) <= kZeroTolerance * s.size;
 }
 
+// std::bit_cast, which emscripten's libc++ 14 lacks.
+template <class To, class From>
+To bits_as(const From& from) {
+  static_assert(sizeof(To) == sizeof(From));
+  To to;
+  std::memcpy(&to, &from, sizeof(To));
+  return to;
+}
+
 // A point strictly inside (a, b) when there is one, else a or b. The arithmetic midpoint when the
 // ends have one sign and lie within a factor 1024; otherwise 0 or the midpoint of the bit
 // patterns (a geometric mean), so that a bracket spanning many binades still shrinks to adjacent
@@ -110,9 +119,9 @@ double split(double a, double b) {
   const double small = std::min(std::abs(a), std::abs(b));
   const double large = std::max(std::abs(a), std::abs(b));
   if (large <= 1024.0 * small) return a + 0.5 * (b - a);
-  const auto is = std::bit_cast<std::uint64_t>(small);
-  const auto il = std::bit_cast<std::uint64_t>(large);
-  const double mid = std::bit_cast<double>(is + (il - is) / 2);
+  const auto is = bits_as<std::uint64_t>(small);
+  const auto il = bits_as<std::uint64_t>(large);
+  const double mid = bits_as<double>(is + (il - is) / 2);
   return b > 0.0 ? mid : -mid;
 }
 
@@ -489,7 +498,7 @@ struct FirstNonpositiveBatch::Work {
     std::size_t entry_count = 0;
     int crossing = -1;  // the quartic search
   };
-  explicit Work(std::pmr::memory_resource* m) : mem(m) {}
+  explicit Work(MemoryResource* m) : mem(m) {}
   Work(const Work&) = delete;
   // The contents only: each keeps its own resource.
   void copy_from(const Work& o) {
@@ -499,28 +508,27 @@ struct FirstNonpositiveBatch::Work {
     quartic_searches = o.quartic_searches;
     derivatives = o.derivatives;
   }
-  std::pmr::memory_resource* const mem;
-  std::pmr::vector<std::optional<double>> out{mem};
-  std::pmr::vector<Pending> pending{mem};
-  std::pmr::vector<BracketedSearch<3>> cubic_searches{mem};
-  std::pmr::vector<BracketedSearch<4>> quartic_searches{mem};
-  std::pmr::vector<Quartic> derivatives{mem};
+  MemoryResource* const mem;
+  ResourceVector<std::optional<double>> out{mem};
+  ResourceVector<Pending> pending{mem};
+  ResourceVector<BracketedSearch<3>> cubic_searches{mem};
+  ResourceVector<BracketedSearch<4>> quartic_searches{mem};
+  ResourceVector<Quartic> derivatives{mem};
 
   // A Work allocated from mem, as everything it holds.
-  static Work* make(std::pmr::memory_resource* mem) {
+  static Work* make(MemoryResource* mem) {
     void* p = mem->allocate(sizeof(Work), alignof(Work));
     return new (p) Work(mem);  // cannot throw: the vectors start empty
   }
 };
 
 void FirstNonpositiveBatch::Release::operator()(Work* w) const {
-  std::pmr::memory_resource* mem = w->mem;
+  MemoryResource* mem = w->mem;
   w->~Work();
   mem->deallocate(w, sizeof(Work), alignof(Work));
 }
 
-FirstNonpositiveBatch::FirstNonpositiveBatch(std::pmr::memory_resource* mem)
-    : work_(Work::make(mem)) {}
+FirstNonpositiveBatch::FirstNonpositiveBatch(MemoryResource* mem) : work_(Work::make(mem)) {}
 FirstNonpositiveBatch::~FirstNonpositiveBatch() = default;
 
 void FirstNonpositiveBatch::reserve(std::size_t n) {

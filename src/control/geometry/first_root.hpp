@@ -14,10 +14,11 @@
 #include <array>
 #include <limits>
 #include <memory>
-#include <memory_resource>
 #include <optional>
 #include <span>
 #include <vector>
+
+#include "memory/memory_resource.hpp"
 
 namespace fragsim {
 
@@ -71,7 +72,7 @@ std::optional<double> first_nonpositive_near(const Quartic& c, double lo, double
 class FirstNonpositiveBatch {
  public:
   // Its work space is allocated from `mem`.
-  explicit FirstNonpositiveBatch(std::pmr::memory_resource* mem = std::pmr::get_default_resource());
+  explicit FirstNonpositiveBatch(MemoryResource* mem = default_memory_resource());
   ~FirstNonpositiveBatch();
   FirstNonpositiveBatch(const FirstNonpositiveBatch&);
   FirstNonpositiveBatch& operator=(const FirstNonpositiveBatch&);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <utility>
 
+#include "geometry/vec3_sums.hpp"
 #include "geometry/work_space.hpp"
 #include "strategies/lane_ops.hpp"
 #include "strategies/lanes.hpp"
@@ -394,7 +395,7 @@ double inverse_sigma_bound(const Eigen::Vector3d (&axes)[3]) {
   double e2 = 0.0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      const double g = axes[i].dot(axes[j]) - (i == j ? 1.0 : 0.0);
+      const double g = dot3(axes[i], axes[j]) - (i == j ? 1.0 : 0.0);
       e2 += g * g;
     }
   }
@@ -407,7 +408,7 @@ FarBound far_bound(double k, const Eigen::Vector3d& lo_m, const Eigen::Vector3d&
                    const Eigen::Vector3d& a_mps2) {
   const Eigen::Vector3d corner = lo_m.cwiseAbs().cwiseMax(hi_m.cwiseAbs());
   const double up = 1.0 + 1e-12;  // the rounding of the norms and products
-  return {k * corner.norm() * up, k * 1.7320508075688774 * up, k * a_mps2.norm() * up};
+  return {k * norm3(corner) * up, k * 1.7320508075688774 * up, k * norm3(a_mps2) * up};
 }
 
 template <class O>
@@ -1294,7 +1295,7 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
   // what the full test clears. Fragments in doubt are listed without a branch: each writes its
   // index, the count advances by one where in doubt (a branch would be mispredicted often).
   const double axes_norm =
-      (frame.axes[0].norm() + frame.axes[1].norm() + frame.axes[2].norm()) * (1.0 + 1e-12);
+      (norm3(frame.axes[0]) + norm3(frame.axes[1]) + norm3(frame.axes[2])) * (1.0 + 1e-12);
   std::size_t doubts = 0;
   for (std::size_t i = 0; i < n; i += lanes::kWidth) {
     const std::size_t i1 = std::min(i + 1, n - 1);
@@ -1341,7 +1342,7 @@ double interval_bound_s(double y_m, double vy_mps, double half_gy_mps2, double g
   return t[0];
 }
 
-TwoBoxClearance::TwoBoxClearance(std::pmr::memory_resource* mem) : mem_(mem) {
+TwoBoxClearance::TwoBoxClearance(MemoryResource* mem) : mem_(mem) {
 #if defined(FRAGSIM_WIDE_LANES)
   wide_ = __builtin_cpu_supports("avx2");
 #endif

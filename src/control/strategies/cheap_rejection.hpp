@@ -13,12 +13,12 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
-#include <memory_resource>
 #include <span>
 #include <vector>
 
 #include "geometry/fragment_state.hpp"
 #include "geometry/parabola.hpp"
+#include "memory/memory_resource.hpp"
 #include "strategies/parallel_for.hpp"
 
 namespace fragsim {
@@ -38,8 +38,7 @@ bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, doub
 // path_clears_ball for many paths under one acceleration and one growth.
 class BallClearance {
  public:
-  explicit BallClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : mem_(mem) {}
+  explicit BallClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
   // Room for n paths, then each one set by index.
   void resize(std::size_t n);
   // Room for runs over up to n paths, set later by resize: such a run allocates nothing while at
@@ -74,14 +73,14 @@ class BallClearance {
     double b[5];
   };
   std::size_t size_ = 0;
-  std::pmr::memory_resource* mem_;
+  MemoryResource* mem_;
   // Padded to whole lanes.
-  std::pmr::vector<double> dx_{mem_}, dy_{mem_}, dz_{mem_}, vx_{mem_}, vy_{mem_}, vz_{mem_},
+  ResourceVector<double> dx_{mem_}, dy_{mem_}, dz_{mem_}, vx_{mem_}, vy_{mem_}, vz_{mem_},
       r0_{mem_}, t_end_{mem_};
-  std::pmr::vector<double> tol_{mem_};
-  std::pmr::vector<char> clears_{mem_};
-  std::pmr::vector<Piece> pieces_{mem_};
-  std::pmr::vector<Piece> next_{mem_};
+  ResourceVector<double> tol_{mem_};
+  ResourceVector<char> clears_{mem_};
+  ResourceVector<Piece> pieces_{mem_};
+  ResourceVector<Piece> next_{mem_};
 };
 
 // The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
@@ -105,8 +104,7 @@ struct BoxFrame {
 // straight from their states, the full test over those it left in doubt.
 class BoxClearance {
  public:
-  explicit BoxClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : mem_(mem) {}
+  explicit BoxClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
   // One flag per fragment: 1 when, in `frame`, its path x(t) = position + velocity t + a t^2
   // clears lo - radius <= x(t) <= hi + radius. Valid until the next call.
   std::span<const char> run(std::span<const FragmentState> fragments, const BoxFrame& frame,
@@ -114,9 +112,9 @@ class BoxClearance {
                             const Eigen::Vector3d& hi_m, double t_end_s);
 
  private:
-  std::pmr::memory_resource* mem_;
-  std::pmr::vector<char> clears_{mem_};
-  std::pmr::vector<std::int32_t> doubt_{mem_};  // fragments the first stage left in doubt
+  MemoryResource* mem_;
+  ResourceVector<char> clears_{mem_};
+  ResourceVector<std::int32_t> doubt_{mem_};  // fragments the first stage left in doubt
 };
 
 // edge-min's whole rejection in one pass over the fragments: the protected box and, for the
@@ -135,7 +133,7 @@ class BoxClearance {
 class TwoBoxClearance {
  public:
   // The first tier four lanes wide where the processor has AVX2, else two (the same answers).
-  explicit TwoBoxClearance(std::pmr::memory_resource* mem = std::pmr::get_default_resource());
+  explicit TwoBoxClearance(MemoryResource* mem = default_memory_resource());
   // For tests: the narrow lanes even where the wide ones are available (false).
   void use_wide_lanes(bool wide);
   struct Boxes {
@@ -197,7 +195,7 @@ class TwoBoxClearance {
   // What one pass of both tiers over some fragments works in (all of them for run(), a chunk on
   // one worker for the run with a ParallelFor). Public only for the .cpp's free functions.
   struct WorkSpace {
-    explicit WorkSpace(std::pmr::memory_resource* mem)
+    explicit WorkSpace(MemoryResource* mem)
         : doubt(mem),
           groups(mem),
           kept(mem),
@@ -210,21 +208,21 @@ class TwoBoxClearance {
     // Sized for a pass over n fragments, within reserve()'s room after it (`unsettled` aside).
     void size_for(std::size_t n);
 
-    std::pmr::vector<std::int32_t> doubt;   // fragments the first tier left in doubt
-    std::pmr::vector<std::int32_t> groups;  // groups of four with one in doubt (wide lanes)
+    ResourceVector<std::int32_t> doubt;   // fragments the first tier left in doubt
+    ResourceVector<std::int32_t> groups;  // groups of four with one in doubt (wide lanes)
     // For each of those groups, what the first tier found, kept for the second rather than
     // gathered and tested again: four lanes of each of its numbers (positions relative to the
     // frame, velocities, radii, intervals), and which lanes it cleared of which box (then the
     // second tier's verdict).
-    std::pmr::vector<double> kept;
-    std::pmr::vector<std::int32_t> verdicts;
+    ResourceVector<double> kept;
+    ResourceVector<std::int32_t> verdicts;
     // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
     // row by row, and each one's group and lane.
-    std::pmr::vector<double> piece_rows;
-    std::pmr::vector<std::int32_t> piece_lanes;
+    ResourceVector<double> piece_rows;
+    ResourceVector<std::int32_t> piece_lanes;
     // A chunk's unsettled fragments, before they go to the run's list (the chunked run's work
     // spaces only: kChunk entries).
-    std::pmr::vector<std::int32_t> unsettled;
+    ResourceVector<std::int32_t> unsettled;
     // Whether the next pass's first loop keeps them: the last pass left more than a few groups
     // in doubt (at first yes, as an explosion's first step has all in doubt). It changes how fast
     // a pass is, never what it answers.
@@ -244,14 +242,14 @@ class TwoBoxClearance {
   void join_chunks(std::size_t chunks);
 
   std::size_t size_ = 0;
-  std::pmr::memory_resource* mem_;
-  std::pmr::vector<char> clears_{mem_};
-  std::pmr::vector<char> grown_clears_{mem_};
-  [[maybe_unused]] bool wide_ = false;         // unused where there are no wide lanes
-  WorkSpace whole_{mem_};                      // run()'s, for every fragment at once
-  std::pmr::vector<WorkSpace> workers_{mem_};  // the chunked run's, one per worker
-  std::pmr::vector<ChunkResult> chunks_{mem_};
-  std::pmr::vector<std::int32_t> unsettled_{mem_};
+  MemoryResource* mem_;
+  ResourceVector<char> clears_{mem_};
+  ResourceVector<char> grown_clears_{mem_};
+  [[maybe_unused]] bool wide_ = false;       // unused where there are no wide lanes
+  WorkSpace whole_{mem_};                    // run()'s, for every fragment at once
+  ResourceVector<WorkSpace> workers_{mem_};  // the chunked run's, one per worker
+  ResourceVector<ChunkResult> chunks_{mem_};
+  ResourceVector<std::int32_t> unsettled_{mem_};
   std::size_t unsettled_count_ = 0;
   std::size_t doubts_ = 0;
   double max_radius_m_ = 0.0;

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/time_to_plane.hpp"
+#include "geometry/vec3_sums.hpp"
 #include "geometry/work_space.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/lanes.hpp"
@@ -31,8 +32,8 @@ Quartic ball_contact_quartic(const BallisticPath& path, const Eigen::Vector3d& c
   const Eigen::Vector3d& d = rel.p0_m;
   const Eigen::Vector3d& v = rel.v0_mps;
   const Eigen::Vector3d a = rel.half_accel_mps2();
-  return {d.dot(d) - r0_m * r0_m, 2.0 * d.dot(v) - 2.0 * r0_m * growth_mps,
-          v.dot(v) + 2.0 * d.dot(a) - growth_mps * growth_mps, 2.0 * v.dot(a), a.dot(a)};
+  return {dot3(d, d) - r0_m * r0_m, 2.0 * dot3(d, v) - 2.0 * r0_m * growth_mps,
+          dot3(v, v) + 2.0 * dot3(d, a) - growth_mps * growth_mps, 2.0 * dot3(v, a), dot3(a, a)};
 }
 
 namespace {
@@ -79,8 +80,8 @@ bool contact_quartic(const BallisticPath& path, const Eigen::Vector3d& camera_m,
   // between is inside (a path grazing the ball within rounding is "clear" here, where the solve
   // could call it a touch).
   const double horizon_s = std::max(t_horizon_s, 0.0);
-  const double closest_m = (path.p0_m - camera_m).norm() - path.v0_mps.norm() * horizon_s -
-                           0.5 * path.accel_mps2.norm() * horizon_s * horizon_s;
+  const double closest_m = norm3(path.p0_m - camera_m) - norm3(path.v0_mps) * horizon_s -
+                           0.5 * norm3(path.accel_mps2) * horizon_s * horizon_s;
   if (closest_m > r0 + growth * horizon_s) return false;
   out = ball_contact_quartic(path, camera_m, r0, growth);
   return true;

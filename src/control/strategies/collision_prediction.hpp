@@ -3,7 +3,6 @@
 // fragment's ballistic path against the ball the camera can reach before the fragment lands.
 
 #include <Eigen/Core>
-#include <memory_resource>
 #include <optional>
 #include <span>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "geometry/first_root.hpp"
 #include "geometry/fragment_state.hpp"
 #include "geometry/parabola.hpp"
+#include "memory/memory_resource.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/edge_params.hpp"
 
@@ -83,8 +83,7 @@ struct ContactQuery {
 // over them as batched passes (BallClearance), the solve only on those left in doubt.
 class ContactPredictor {
  public:
-  explicit ContactPredictor(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : mem_(mem) {}
+  explicit ContactPredictor(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
   // One prediction per index in `which`, in order; valid until the next call. `screen`, when not
   // empty, says per index whether the cheap rejection is worth trying first: not for a fragment
   // that was a candidate a step ago and almost surely still is (the answer is the same either way).
@@ -101,18 +100,18 @@ class ContactPredictor {
   void reserve(std::size_t n);
 
  private:
-  std::pmr::memory_resource* mem_;
+  MemoryResource* mem_;
   BallClearance clearance_{mem_};
-  std::pmr::vector<int> screened_{mem_};  // positions in `which` that go through the rejection
+  ResourceVector<int> screened_{mem_};  // positions in `which` that go through the rejection
   // Of the screened fragments: the path's velocity and height, the radius, t_G.
-  std::pmr::vector<double> vy_{mem_}, py_{mem_}, radius_{mem_}, t_horizon_{mem_};
+  ResourceVector<double> vy_{mem_}, py_{mem_}, radius_{mem_}, t_horizon_{mem_};
   // The quartics left to solve, their horizons and the positions in `which` they answer for.
-  std::pmr::vector<Quartic> quartics_{mem_};
-  std::pmr::vector<double> quartic_horizons_s_{mem_};
-  std::pmr::vector<int> quartic_of_{mem_};
-  std::pmr::vector<double> quartic_guess_s_{mem_};
+  ResourceVector<Quartic> quartics_{mem_};
+  ResourceVector<double> quartic_horizons_s_{mem_};
+  ResourceVector<int> quartic_of_{mem_};
+  ResourceVector<double> quartic_guess_s_{mem_};
   FirstNonpositiveBatch roots_{mem_};
-  std::pmr::vector<ContactPrediction> out_{mem_};
+  ResourceVector<ContactPrediction> out_{mem_};
 };
 
 // Where a path relative to the camera (moving at camera_velocity) first reaches the near plane,

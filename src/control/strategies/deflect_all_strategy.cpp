@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "geometry/vec3_sums.hpp"
 #include "strategies/force_cap.hpp"
 #include "strategies/parallel_ranges.hpp"
 
@@ -26,12 +27,12 @@ DeflectAllStrategy::Push DeflectAllStrategy::push_of(const StepContext& ctx, std
   const CameraPose& cam = ctx.camera;
   const FragmentState& f = ctx.fragments[i];
   const Eigen::Vector3d rel = f.position_m - cam.eye_m;
-  if (rel.squaredNorm() > params_.range_m * params_.range_m) return {};
+  if (squared_norm3(rel) > params_.range_m * params_.range_m) return {};
   const Eigen::Vector3d rel_v = f.velocity_mps - ctx.camera_velocity_mps;
-  if (rel.dot(rel_v) >= 0.0) return {};  // not approaching
+  if (dot3(rel, rel_v) >= 0.0) return {};  // not approaching
   // Away from the view axis: the fragment's offset across the view direction.
-  Eigen::Vector3d away = rel - rel.dot(cam.forward) * cam.forward;
-  const double n = away.norm();
+  Eigen::Vector3d away = rel - dot3(rel, cam.forward) * cam.forward;
+  const double n = norm3(away);
   // A fragment on the axis itself has no "away": push it up, as debris usually clears upward.
   away = n > 1e-9 ? Eigen::Vector3d(away / n) : cam.up;
   return {true, f.mass_kg * params_.accel_mps2 * away};

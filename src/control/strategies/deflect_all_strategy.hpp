@@ -3,9 +3,9 @@
 // axis, with no prediction and no choice of edge (thesis fig. 2.2).
 
 #include <Eigen/Core>
-#include <memory_resource>
 #include <vector>
 
+#include "memory/memory_resource.hpp"
 #include "strategies/deflect_all_params.hpp"
 #include "strategies/strategy.hpp"
 
@@ -15,7 +15,7 @@ class DeflectAllStrategy final : public Strategy {
  public:
   // It keeps nothing of the run between steps; `mem` holds the parallel step's work space.
   explicit DeflectAllStrategy(const DeflectAllParams& params,
-                              std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+                              MemoryResource* mem = default_memory_resource())
       : params_(params), pushes_(mem) {}
   std::string name() const override { return "deflect-all"; }
   void reset(int fragment_count) override { reserve(fragment_count); }
@@ -33,7 +33,7 @@ class DeflectAllStrategy final : public Strategy {
   Push push_of(const StepContext& ctx, std::size_t i) const;
 
   DeflectAllParams params_;
-  std::pmr::vector<Push> pushes_;  // the parallel step's, one per fragment
+  ResourceVector<Push> pushes_;  // the parallel step's, one per fragment
 };
 
 }  // namespace fragsim

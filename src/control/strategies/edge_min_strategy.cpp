@@ -13,6 +13,7 @@
 #include "geometry/first_root.hpp"
 #include "geometry/parabola.hpp"
 #include "geometry/time_to_plane.hpp"
+#include "geometry/vec3_sums.hpp"
 #include "strategies/force_cap.hpp"
 #include "strategies/intervals.hpp"
 #include "strategies/parallel_ranges.hpp"
@@ -442,7 +443,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   // and about the eye now (V_c; both models). Each side grows by the chord of the view's turn, at
   // most to the ball every orientation of the box lies in (Inflation), so any turn rate is safe.
   const bool robust = params_.camera_model != CameraModel::kConstant;
-  const double rot_m = Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)).norm();
+  const double rot_m = norm3(Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)));
   const double turn_radps = assumed_turn_radps(ctx);
   const std::array<double, 6> turn_cap_m = turn_caps_m(lo_m, hi_m, rot_m);
   const bool ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
@@ -575,8 +576,8 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
       // a fragment not closing in is last (+inf).
       const FragmentState& f = ctx.fragments[i];
       const Eigen::Vector3d d = f.position_m - cam.eye_m;
-      const double closing = -d.dot(f.velocity_mps - ctx.camera_velocity_mps);
-      const double arrival_s = closing > 0.0 ? d.squaredNorm() / closing : kInf;
+      const double closing = -dot3(d, f.velocity_mps - ctx.camera_velocity_mps);
+      const double arrival_s = closing > 0.0 ? squared_norm3(d) / closing : kInf;
       // Threats to the protected box on the current path (not cleared of it) before those only
       // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
       queue_.push_back({clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});

@@ -40,12 +40,12 @@
 // all the doubts before any solve, and the bound's prediction takes the pushes one by one.
 
 #include <array>
-#include <memory_resource>
 #include <span>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "memory/memory_resource.hpp"
 #include "strategies/cheap_rejection.hpp"
 #include "strategies/edge_min_params.hpp"
 #include "strategies/occlusion_bound.hpp"
@@ -57,7 +57,7 @@ class EdgeMinStrategy final : public Strategy {
  public:
   // Its state and work space are allocated from `mem` (the controller library's allocator hook).
   explicit EdgeMinStrategy(const EdgeMinParams& params,
-                           std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+                           MemoryResource* mem = default_memory_resource())
       : params_(params),
         mem_(mem),
         // The ways out in the solver's order (+up, -up, +right, -right) from top bottom left right.
@@ -98,7 +98,7 @@ class EdgeMinStrategy final : public Strategy {
 
  private:
   EdgeMinParams params_;
-  std::pmr::memory_resource* mem_;
+  MemoryResource* mem_;
   std::array<double, 4> way_weights_;
   bool weighted_;
   OcclusionBound cover_{mem_};
@@ -113,17 +113,16 @@ class EdgeMinStrategy final : public Strategy {
     bool pushed = false;
     Eigen::Vector3d force_N = Eigen::Vector3d::Zero();
   };
-  std::pmr::vector<SolveAnswer> answers_{mem_};  // one per unsettled fragment, in its order
+  ResourceVector<SolveAnswer> answers_{mem_};  // one per unsettled fragment, in its order
   void reserve_answers(std::size_t n);
   double r_max_hint_m_ = -1.0;  // none yet
   // The budget's state (max_solves > 0 only): per fragment, the force of the last step it was
   // solved (zero when it was cleared or got none), and this step's ranking and deferrals.
-  std::pmr::vector<Eigen::Vector3d> last_force_N_{mem_};
-  std::pmr::vector<Eigen::Vector3d> carried_from_{
-      mem_};                   // last_force_N_ before the last carry_over
-  bool carried_over_ = false;  // ... which did swap the two
-  std::pmr::vector<std::tuple<int, double, int>> queue_{mem_};  // (tier, arrival, fragment)
-  std::pmr::vector<char> deferred_{mem_};
+  ResourceVector<Eigen::Vector3d> last_force_N_{mem_};
+  ResourceVector<Eigen::Vector3d> carried_from_{mem_};  // last_force_N_ before the last carry_over
+  bool carried_over_ = false;                           // ... which did swap the two
+  ResourceVector<std::tuple<int, double, int>> queue_{mem_};  // (tier, arrival, fragment)
+  ResourceVector<char> deferred_{mem_};
 };
 
 }  // namespace fragsim

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "geometry/vec3_sums.hpp"
 #include "geometry/work_space.hpp"
 #include "strategies/force_cap.hpp"
 
@@ -40,8 +41,7 @@ void EdgeStrategy::reserve(int fragment_count) {
 
 void EdgeStrategy::carry_over(std::span<const int> previous) {
   // Each into its spare array, which then keeps the state before the call for undo_carry_over.
-  auto remap = [&previous]<class T>(std::pmr::vector<T>& state, std::pmr::vector<T>& spare,
-                                    T fresh) {
+  auto remap = [&previous]<class T>(ResourceVector<T>& state, ResourceVector<T>& spare, T fresh) {
     spare.assign(previous.size(), fresh);
     for (std::size_t i = 0; i < previous.size(); ++i) {
       const int j = previous[i];
@@ -89,7 +89,7 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   query.remaining_s = std::max(std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s), 0.0);
   query.reach = params_.reach;
   query.max_speed_mps = ctx.camera_max_speed_mps;
-  query.body_radius_m = ctx.camera_body_half_m.norm();
+  query.body_radius_m = norm3(ctx.camera_body_half_m);
   const double half_w_m = cam.near_half_width_m();
   const double half_h_m = cam.near_half_height_m();
 
@@ -131,8 +131,8 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     // Magnitude (3.4): k |V_pc| / (|P_pc|^2 (t_C - t)). Both denominators vanish at the camera:
     // they are kept at least one step and one contact distance, and the result is capped.
     const double contact_radius_m = query.model(f).radius_m;
-    const double rel_speed_mps = (f.velocity_mps - ctx.camera_velocity_mps).norm();
-    double dist_m = (f.position_m - cam.eye_m).norm();
+    const double rel_speed_mps = norm3(f.velocity_mps - ctx.camera_velocity_mps);
+    double dist_m = norm3(f.position_m - cam.eye_m);
     double lead_s = pred.t_contact_s;
     if (lead_s < ctx.dt_s || dist_m < contact_radius_m) ++out.activity.guarded;
     lead_s = std::max(lead_s, ctx.dt_s);

@@ -5,10 +5,10 @@
 // near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
 // candidate.
 
-#include <memory_resource>
 #include <span>
 #include <vector>
 
+#include "memory/memory_resource.hpp"
 #include "strategies/collision_prediction.hpp"
 #include "strategies/edge_params.hpp"
 #include "strategies/strategy.hpp"
@@ -18,8 +18,7 @@ namespace fragsim {
 class EdgeStrategy final : public Strategy {
  public:
   // Its state and work space are allocated from `mem` (the controller library's allocator hook).
-  explicit EdgeStrategy(const EdgeParams& params,
-                        std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+  explicit EdgeStrategy(const EdgeParams& params, MemoryResource* mem = default_memory_resource())
       : params_(params), mem_(mem) {}
   std::string name() const override { return "edge"; }
   void reset(int fragment_count) override;
@@ -40,20 +39,20 @@ class EdgeStrategy final : public Strategy {
   bool should_examine(const StepContext& ctx, std::size_t i) const;
 
   EdgeParams params_;
-  std::pmr::memory_resource* mem_;
-  std::pmr::vector<char> candidate_{mem_};  // examined again next step
-  std::pmr::vector<char> pushed_{mem_};     // got a force in the last step
-  std::pmr::vector<char> predicted_{mem_};  // was a candidate by the last prediction (not reset's)
+  MemoryResource* mem_;
+  ResourceVector<char> candidate_{mem_};  // examined again next step
+  ResourceVector<char> pushed_{mem_};     // got a force in the last step
+  ResourceVector<char> predicted_{mem_};  // was a candidate by the last prediction (not reset's)
   // The contact time the last prediction found (NaN: none), relative to that step: a step later
   // the contact is near it less dt, where its root search starts (first_nonpositive_near).
-  std::pmr::vector<double> last_contact_s_{mem_};
+  ResourceVector<double> last_contact_s_{mem_};
   // The four above as they were before the last carry_over.
-  std::pmr::vector<char> candidate_before_{mem_}, pushed_before_{mem_}, predicted_before_{mem_};
-  std::pmr::vector<double> last_contact_before_s_{mem_};
+  ResourceVector<char> candidate_before_{mem_}, pushed_before_{mem_}, predicted_before_{mem_};
+  ResourceVector<double> last_contact_before_s_{mem_};
   // Work space, kept between steps to save allocations; holds no state of the run.
-  std::pmr::vector<int> examined_{mem_};
-  std::pmr::vector<char> screen_{mem_};
-  std::pmr::vector<double> guess_s_{mem_};
+  ResourceVector<int> examined_{mem_};
+  ResourceVector<char> screen_{mem_};
+  ResourceVector<double> guess_s_{mem_};
   ContactPredictor predictor_{mem_};
 };
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "geometry/vec3_sums.hpp"
 #include "strategies/strategy.hpp"
 
 namespace fragsim {
@@ -19,7 +20,7 @@ inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& f
     return;
   }
   const double limit_N = mass_kg * a_max_mps2;
-  double norm_N = force_N.norm();
+  double norm_N = norm3(force_N);
   // The squares overflow above about 1e154 N and vanish below about 1e-154 N: there the norm is
   // taken with scaling. Elsewhere the plain norm, whose bits the pinned results rely on.
   if (!std::isfinite(norm_N) || norm_N < 1e-150) norm_N = force_N.stableNorm();

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/frustum.hpp"
+#include "geometry/vec3_sums.hpp"
 
 namespace fragsim {
 namespace {
@@ -86,7 +87,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   // again on every later step, so the plan is kept rather than lost between samples.
   const long long last_step =
       std::max(1LL, static_cast<long long>(std::llround(params.cover_horizon_s / dt)));
-  std::pmr::vector<long long> steps(mem_);
+  ResourceVector<long long> steps(mem_);
   const long long dense = 2LL * params.cover_samples;
   const long long now = std::max(0, ctx.step);
   // Band by band (stride 1 for d < dense, then stride s for dense s / 2 <= d < dense s), only
@@ -120,7 +121,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   const double near_m = cam.near_m;
 
   // The push already given this step (edge-min's, against the camera): part of the path.
-  std::pmr::vector<int> slot(n, -1, mem_);
+  ResourceVector<int> slot(n, -1, mem_);
   for (std::size_t k = 0; k < out.forces.size(); ++k) {
     const int i = out.forces[k].fragment;
     if (i >= 0 && static_cast<std::size_t>(i) < n)
@@ -162,12 +163,12 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
       continue;
     }
     Eigen::Vector3d brake = -added_mps_[i] / dt;
-    if (brake.norm() > params.a_max_mps2) brake *= params.a_max_mps2 / brake.norm();
+    if (norm3(brake) > params.a_max_mps2) brake *= params.a_max_mps2 / norm3(brake);
     add_force(i, f.mass_kg * brake);
-    if (added_mps_[i].norm() < 1e-9) added_mps_[i].setZero();
+    if (norm3(added_mps_[i]) < 1e-9) added_mps_[i].setZero();
   }
 
-  std::pmr::vector<Path> paths(n, mem_);
+  ResourceVector<Path> paths(n, mem_);
   const auto disc_at = [&](const Eigen::Vector3d& p, double rho) {
     Disc d;
     if (!(p.z() + rho > near_m)) return d;  // wholly behind the near plane: nothing drawn
@@ -188,7 +189,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
       const Eigen::Vector3d push =
           out.forces[static_cast<std::size_t>(slot[i])].force_N / f.mass_kg;
       accel += push;
-      p.base_accel = push.norm();
+      p.base_accel = norm3(push);
     }
     p.d = cam.to_camera(f.position_m);
     p.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
@@ -266,7 +267,7 @@ void OcclusionBound::step(const StepContext& ctx, const EdgeMinParams& params,
   // fragment is out, and a plan handed from fragment to fragment every step moves many a little
   // and clears none), then by cells covered per push.
   if (pushed_last_.size() != n) pushed_last_.assign(n, 0);
-  std::pmr::vector<std::tuple<int, double, int>> order(
+  ResourceVector<std::tuple<int, double, int>> order(
       mem_);  // (not pushed last, -score, fragment): total
   for (std::size_t i = 0; i < n; ++i) {
     int most = 0;

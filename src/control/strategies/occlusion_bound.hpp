@@ -34,9 +34,9 @@
 
 #include <array>
 #include <cstdint>
-#include <memory_resource>
 #include <vector>
 
+#include "memory/memory_resource.hpp"
 #include "strategies/edge_min_params.hpp"
 #include "strategies/strategy.hpp"
 
@@ -45,8 +45,7 @@ namespace fragsim {
 class OcclusionBound {
  public:
   // Its state, its work space and its step's temporaries are allocated from `mem`.
-  explicit OcclusionBound(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
-      : mem_(mem) {}
+  explicit OcclusionBound(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
   // Called before the first step of every run.
   void reset(int fragment_count);
   // Ways out, in edge-min's order: +up (top), -up (bottom), +right (right), -right (left).
@@ -57,9 +56,9 @@ class OcclusionBound {
   // The last step's prediction: the sample times (from the start of the step) and the covered
   // share of the region at each, before and after the pushes it added. Empty when cover_max is
   // off.
-  const std::pmr::vector<double>& sample_times_s() const { return times_s_; }
-  const std::pmr::vector<double>& predicted_before() const { return before_; }
-  const std::pmr::vector<double>& predicted_after() const { return after_; }
+  const ResourceVector<double>& sample_times_s() const { return times_s_; }
+  const ResourceVector<double>& predicted_before() const { return before_; }
+  const ResourceVector<double>& predicted_after() const { return after_; }
   int pushed() const { return pushed_; }
 
  private:
@@ -71,22 +70,22 @@ class OcclusionBound {
     double ry = 0.0;
     bool present = false;
   };
-  std::pmr::memory_resource* mem_;
+  MemoryResource* mem_;
   int rows_ = 0;
   int cols_ = 0;
-  std::pmr::vector<double> times_s_{mem_};
-  std::pmr::vector<double> before_{mem_};
-  std::pmr::vector<double> after_{mem_};
+  ResourceVector<double> times_s_{mem_};
+  ResourceVector<double> before_{mem_};
+  ResourceVector<double> after_{mem_};
   int pushed_ = 0;
   // Per sample, per cell: how many discs cover it (so a disc can be taken away again).
-  std::pmr::vector<std::uint16_t> count_{mem_};
-  std::pmr::vector<int> covered_{mem_};  // per sample: cells with count > 0
+  ResourceVector<std::uint16_t> count_{mem_};
+  ResourceVector<int> covered_{mem_};  // per sample: cells with count > 0
   // Per fragment and sample (fragment-major): its disc, and how many cells it covers.
-  std::pmr::vector<Disc> disc_{mem_};
-  std::pmr::vector<int> own_{mem_};
+  ResourceVector<Disc> disc_{mem_};
+  ResourceVector<int> own_{mem_};
   // Per fragment: pushed in the last step, and the velocity its pushes added (run state).
-  std::pmr::vector<char> pushed_last_{mem_};
-  std::pmr::vector<Eigen::Vector3d> added_mps_{mem_};
+  ResourceVector<char> pushed_last_{mem_};
+  ResourceVector<Eigen::Vector3d> added_mps_{mem_};
 
   int paint(int sample, const Disc& d, int delta);
 };

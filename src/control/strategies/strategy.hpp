@@ -5,13 +5,13 @@
 // clears the run state so a rerun is reproducible.
 
 #include <limits>
-#include <memory_resource>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "geometry/camera_pose.hpp"
 #include "geometry/fragment_state.hpp"
+#include "memory/memory_resource.hpp"
 #include "strategies/parallel_for.hpp"
 
 namespace fragsim {
@@ -52,15 +52,15 @@ struct StepContext {
 // What a strategy did in a step besides its effects, for the report (RunSummary's strategy
 // activity) and the C API's stats: nothing here changes the world.
 //
-// The containers here and in the strategies are std::pmr ones: the tool runs them on the default
-// resource (operator new), the controller library on the game's allocator hook.
+// The containers here and in the strategies take a MemoryResource: the tool runs them on the
+// default one (operator new), the controller library on the game's allocator hook.
 struct StepActivity {
-  explicit StepActivity(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+  explicit StepActivity(MemoryResource* mem = default_memory_resource())
       : candidates(mem), capped(mem) {}
-  std::pmr::vector<int> candidates;  // fragments the strategy considers threatening (edge)
-  std::pmr::vector<int> capped;      // fragments whose force the acceleration cap reduced
-  int guarded = 0;                   // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
-  int deferred = 0;                  // fragments a per-step budget left unsolved (edge-min)
+  ResourceVector<int> candidates;  // fragments the strategy considers threatening (edge)
+  ResourceVector<int> capped;      // fragments whose force the acceleration cap reduced
+  int guarded = 0;                 // singular spots (t_C - t -> 0, |P_pc| -> 0) guarded
+  int deferred = 0;                // fragments a per-step budget left unsolved (edge-min)
   // Fragments a cheap test settled before any exact solve (edge-min: its box rejection).
   int rejected_cheaply = 0;
 
@@ -80,9 +80,9 @@ struct StepActivity {
 // A strategy's answer for one step: the forces the physics applies, and the strategy's activity
 // for the report and the C API's stats.
 struct StepOutput {
-  explicit StepOutput(std::pmr::memory_resource* mem = std::pmr::get_default_resource())
+  explicit StepOutput(MemoryResource* mem = default_memory_resource())
       : forces(mem), activity(mem) {}
-  std::pmr::vector<AppliedForce> forces;  // at most one entry per fragment
+  ResourceVector<AppliedForce> forces;  // at most one entry per fragment
   StepActivity activity;
 
   // Room for one force per fragment: a step within it does not allocate.
