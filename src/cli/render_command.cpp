@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "experiments/evaluation.hpp"
+#include "experiments/median.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
 #include "report/csv_export.hpp"
@@ -48,13 +49,6 @@ std::string frame_name(int step) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "frame_%05d.png", step);
   return buf;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace

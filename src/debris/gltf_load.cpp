@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "debris/mesh_message.hpp"
 #include "io/input_error.hpp"
 
 namespace fragsim {
@@ -20,20 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One line: the library's messages may span several.
-std::string one_line(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return s;
-}
-
-// A uri as a message shows it: printable, and not endless (a data: uri can be megabytes).
-std::string shown(std::string_view uri) {
-  std::string out;
-  for (char c : uri.substr(0, 80)) {
-    out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
-  }
-  return uri.size() > 80 ? out + "..." : out;
+// A uri as a message shows it (a data: uri can be megabytes).
+std::string shown_uri(std::string_view uri) {
+  return shown(uri, 80);
 }
 
 // Extensions that a file may require and fragsim still read right: they change how a surface
@@ -57,7 +47,7 @@ std::string unsupported_extension(const std::string& name) {
     return "requires the extension EXT_meshopt_compression: meshopt-compressed meshes are not "
            "supported; export without compression (gltfpack: leave out -c and -cc)";
   }
-  return "requires the extension " + shown(name) +
+  return "requires the extension " + shown_uri(name) +
          ", which fragsim does not support (it may change the meshes' positions); export "
          "without it";
 }
@@ -134,7 +124,7 @@ std::string checked_file(Access& a, const std::string& joined) {
   const auto known = a.file_of.find(uri);
   if (known != a.file_of.end()) uri = known->second;
   const auto refuse = [&](const std::string& why) {
-    if (a.broken.empty()) a.broken = "uri '" + shown(uri) + "' " + why;
+    if (a.broken.empty()) a.broken = "uri '" + shown_uri(uri) + "' " + why;
     return std::string();
   };
   if (uri.find('\0') != std::string::npos) return refuse("holds a NUL byte");
@@ -251,7 +241,7 @@ void check_json(const std::string& json, const std::string& path, Access& a) {
         const std::size_t decoded =
             comma == std::string::npos ? 0 : (uri.size() - comma - 1) / 4 * 3;
         if (decoded > kMaxDataUriBytes) {
-          throw InputError(path + ": " + std::string(kind) + ": uri '" + shown(uri) +
+          throw InputError(path + ": " + std::string(kind) + ": uri '" + shown_uri(uri) +
                            "' holds about " + std::to_string(decoded >> 20) +
                            " MiB, above the 64 MiB limit of embedded data (write it to a .bin "
                            "file beside the .gltf, or a .glb)");
@@ -261,13 +251,13 @@ void check_json(const std::string& json, const std::string& path, Access& a) {
       std::string spec;
       std::string why;
       if (!percent_decode(uri, spec, why)) {
-        throw InputError(path + ": uri '" + shown(uri) + "' " + why);
+        throw InputError(path + ": uri '" + shown_uri(uri) + "' " + why);
       }
       const std::string theirs = tinygltf_decoded(uri, spec);
       const auto [it, added] = a.file_of.emplace(theirs, spec);
       if (!added && it->second != spec) {
-        throw InputError(path + ": uris '" + shown(uri) + "' and another decode to '" +
-                         shown(it->second) + "' and '" + shown(spec) +
+        throw InputError(path + ": uris '" + shown_uri(uri) + "' and another decode to '" +
+                         shown_uri(it->second) + "' and '" + shown_uri(spec) +
                          "', which this reader cannot tell apart; rename one file");
       }
     }

@@ -17,6 +17,7 @@
 #include "debris/convex_hull.hpp"
 #include "debris/debris_def.hpp"
 #include "debris/gltf_load.hpp"
+#include "debris/mesh_message.hpp"
 #include "debris/obj_check.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
@@ -33,13 +34,6 @@ std::string extension_of(const std::string& path) {
   std::transform(e.begin(), e.end(), e.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return e;
-}
-
-// One line: the library's messages may span several.
-std::string one_line(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r')) s.pop_back();
-  return s;
 }
 
 struct RawPiece {

@@ -6,6 +6,7 @@
 #include <system_error>
 #include <vector>
 
+#include "debris/mesh_message.hpp"
 #include "io/input_error.hpp"
 
 namespace fragsim {
@@ -62,13 +63,9 @@ std::string coordinate_rule(std::string_view t) {
   return "";
 }
 
-// A token as a message shows it: printable, and not endless.
-std::string shown(std::string_view t) {
-  std::string out;
-  for (char c : t.substr(0, 40)) {
-    out += static_cast<unsigned char>(c) < 0x20 || c == 0x7f ? '?' : c;
-  }
-  return t.size() > 40 ? out + "..." : out;
+// A token as a message shows it.
+std::string shown_token(std::string_view t) {
+  return shown(t, 40);
 }
 
 }  // namespace
@@ -94,7 +91,7 @@ void check_obj_text(const std::string& text, const std::string& path) {
       for (std::size_t i = 1; i < t.size(); ++i) {
         const std::string rule = coordinate_rule(t[i]);
         if (!rule.empty()) {
-          throw InputError(at + "vertex coordinate '" + shown(t[i]) + "' " + rule);
+          throw InputError(at + "vertex coordinate '" + shown_token(t[i]) + "' " + rule);
         }
       }
       ++before;
@@ -104,7 +101,7 @@ void check_obj_text(const std::string& text, const std::string& path) {
         long long v = 0;
         const auto r = std::from_chars(index.data(), index.data() + index.size(), v);
         if (index.empty() || r.ec != std::errc() || r.ptr != index.data() + index.size()) {
-          throw InputError(at + "face index '" + shown(t[i]) + "' is not a whole number");
+          throw InputError(at + "face index '" + shown_token(t[i]) + "' is not a whole number");
         }
         if (v == 0) throw InputError(at + "face index 0: OBJ counts vertices from 1");
         if (v < 0 && -v > before) {

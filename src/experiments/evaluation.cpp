@@ -120,14 +120,16 @@ std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::strin
   return runs;
 }
 
+int thesis_goal_failures(const RunSummary& s) {
+  return s.intersections.near_fragments + s.intersections.camera_hit_fragments +
+         s.intersections.vanished_fragments;
+}
+
 std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs) {
   std::optional<std::size_t> best;
   auto key = [](const RunSummary& s) {
-    // A fragment that vanishes fails the goals as one that is cut does: the thesis wants debris
-    // to leave the picture, not to disappear from it.
-    return std::make_tuple(s.intersections.near_fragments + s.intersections.camera_hit_fragments +
-                               s.intersections.vanished_fragments,
-                           s.deviation.mean_m, -s.intersections.near_misses);
+    return std::make_tuple(thesis_goal_failures(s), s.deviation.mean_m,
+                           -s.intersections.near_misses);
   };
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (runs[i].summary.strategy == "none") continue;

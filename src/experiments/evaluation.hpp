@@ -54,6 +54,11 @@ std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::strin
 // best of the runs other than `none`; nullopt if none.
 std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs);
 
+// The fragments that failed the thesis's goals in a run: cut by the near plane, hitting the
+// camera's body, or vanishing on screen (fade). A fragment that vanishes fails them as one that
+// is cut does: the thesis wants debris to leave the picture, not to disappear from it.
+int thesis_goal_failures(const RunSummary& s);
+
 // The z-fighting flag: the depth step at the reference distance exceeds 1e-3 of that distance.
 bool z_fighting(const RunSummary& summary, double ref_distance_m);
 

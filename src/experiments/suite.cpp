@@ -8,6 +8,7 @@
 
 #include "experiments/evaluation.hpp"
 #include "experiments/evaluation_codec.hpp"
+#include "experiments/median.hpp"
 #include "experiments/process_runner.hpp"
 #include "experiments/shard.hpp"
 #include "io/input_file.hpp"
@@ -42,13 +43,6 @@ Scene variant_scene(const std::string& text, const SuiteRun& run, const SuiteVar
   std::vector<SceneOverride> o = suite_overrides(run);
   o.insert(o.end(), v.overrides.begin(), v.overrides.end());
   return parse_scene(text, run.scene + ".ini", o);
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "experiments/accuracy_probe.hpp"
+#include "experiments/median.hpp"
 #include "io/number_format.hpp"
 #include "metrics/near_plane_metric.hpp"
 #include "sim/scene_strategies.hpp"
@@ -22,12 +23,6 @@ SceneOverride key(const std::string& k, const std::string& v) {
 
 std::string dt_value(int per_second) {
   return format_double(1.0 / per_second);
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 struct Measured {

@@ -71,13 +71,6 @@ bool has_occlusion(const Evaluation& e) {
   return !e.occlusion_per_step.empty();
 }
 
-// The failures of the thesis's goals (best_for_thesis_goals): a fragment cut by the near plane,
-// one that hits the camera body and one that vanishes on screen (fade).
-int hits(const RunSummary& s) {
-  return s.intersections.near_fragments + s.intersections.camera_hit_fragments +
-         s.intersections.vanished_fragments;
-}
-
 // "a", "a and b", "a, b and c".
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -200,7 +193,7 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   if (none) {
     const RunSummary& s = none->summary;
     std::string p;
-    if (hits(s) == 0) {
+    if (thesis_goal_failures(s) == 0) {
       p = "Without control (none), no fragment met the near plane or the camera body on this "
           "scene.";
     } else {
@@ -228,7 +221,7 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   }
   const Evaluation& b = runs[*best];
   const RunSummary& s = b.summary;
-  if (hits(s) > 0) {
+  if (thesis_goal_failures(s) > 0) {
     std::string p =
         "No strategy met the thesis's goals on this scene (no near-plane intersections, no "
         "camera hits and no fragment vanishing on screen): each let fragments through or made "
@@ -278,7 +271,7 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
   std::vector<std::string> also;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const RunSummary& o = runs[i].summary;
-    if (i == *best || o.strategy == "none" || hits(o) > 0) continue;
+    if (i == *best || o.strategy == "none" || thesis_goal_failures(o) > 0) continue;
     also.push_back(o.strategy +
                    (runs[i].has_deviation
                         ? " (mean deviation " + fixed_text(o.deviation.mean_m, 3) + " m)"

@@ -81,12 +81,6 @@ std::string pushed_exits_text(const RunSummary& s) {
          std::to_string(s.pushed_exits.near) + "/" + std::to_string(s.pushed_exits.stayed);
 }
 
-// The failures of the thesis's goals: cut, hit or vanished (best_for_thesis_goals).
-int hits(const RunSummary& s) {
-  return s.intersections.near_fragments + s.intersections.camera_hit_fragments +
-         s.intersections.vanished_fragments;
-}
-
 std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluation>& runs) {
   std::vector<ResultsNote> notes;
   for (const Evaluation& e : runs) {
@@ -129,7 +123,7 @@ std::vector<ResultsNote> run_notes(const Scene& scene, const std::vector<Evaluat
 std::string verdict(const std::vector<Evaluation>& runs, std::optional<std::size_t> best) {
   if (!best) return "";
   const RunSummary& s = runs[*best].summary;
-  const int n = hits(s);
+  const int n = thesis_goal_failures(s);
   return "best for the thesis's goals (no intersections or vanished fragments, then least "
          "deviation, then most near misses): " +
          s.strategy + " (" +
@@ -309,7 +303,7 @@ ResultsTable results_table(const Scene& scene, const std::vector<Evaluation>& ru
     t.rows.push_back(std::move(row));
   }
   const std::optional<std::size_t> best = best_for_thesis_goals(runs);
-  if (best && hits(runs[*best].summary) == 0) t.best_row = best;
+  if (best && thesis_goal_failures(runs[*best].summary) == 0) t.best_row = best;
   t.notes = run_notes(scene, runs);
   t.verdict = verdict(runs, best);
   return t;

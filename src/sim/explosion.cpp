@@ -7,14 +7,6 @@
 namespace fragsim {
 namespace {
 
-// A uniform random point in the unit ball, by rejection (the same sequence everywhere).
-Eigen::Vector3d unit_ball(Random& rng) {
-  for (;;) {
-    Eigen::Vector3d v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    if (v.squaredNorm() <= 1.0) return v;
-  }
-}
-
 // The ballistic velocity that takes a point from `from` to the camera's eye, flying the
 // straight-line distance at mean speed `speed_mps`: to where the eye will be when the debris
 // arrives (aim = future; the arrival time is found by fixed-point iteration: the camera is slower
@@ -99,11 +91,11 @@ std::vector<FragmentSpawn> explode(const Scene& scene, const CameraMotion& camer
     f.shape = piece.shape;
     Eigen::Vector3d radial = f.position_m - blast_m;
     // A fragment at the blast centre itself gets a random direction.
-    radial = radial.norm() > 1e-12 ? radial.normalized() : unit_ball(rng).normalized();
+    radial = radial.norm() > 1e-12 ? radial.normalized() : random_in_unit_ball(rng).normalized();
     const double scale = 1.0 + ex.jitter * rng.uniform(-1.0, 1.0);
-    f.velocity_mps =
-        scale * (ex.speed_mps * radial + aim_mps) + ex.jitter * ex.speed_mps * unit_ball(rng);
-    f.angular_velocity_radps = ex.spin_radps * unit_ball(rng);
+    f.velocity_mps = scale * (ex.speed_mps * radial + aim_mps) +
+                     ex.jitter * ex.speed_mps * random_in_unit_ball(rng);
+    f.angular_velocity_radps = ex.spin_radps * random_in_unit_ball(rng);
     out.push_back(f);
   }
   return out;

@@ -14,13 +14,6 @@ namespace {
 // Mixed into the scene's seed so the player's draws never share the explosion's sequence.
 constexpr std::uint64_t kPlayerStream = 0x9E3779B97F4A7C15ull;
 
-Eigen::Vector3d unit_ball(Random& rng) {
-  for (;;) {
-    Eigen::Vector3d v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
-    if (v.squaredNorm() <= 1.0) return v;
-  }
-}
-
 // Waiting time of a Poisson process with mean `mean_s` (infinite: never).
 double next_wait_s(Random& rng, double mean_s) {
   if (std::isinf(mean_s)) return mean_s;
@@ -88,7 +81,7 @@ std::vector<CameraSample> player_track(const Scene& scene) {
     out.push_back({t, eye, view.forward, view.up});
     while (t >= next_change_s) {
       intent = draw_intent(rng, intent, view.forward, cam.max_speed_mps);
-      target = centre + cam.player_look_radius_m * unit_ball(rng);
+      target = centre + cam.player_look_radius_m * random_in_unit_ball(rng);
       next_change_s += next_wait_s(rng, cam.player_interval_s);
     }
     const Eigen::Vector3d change = intent - velocity;

@@ -2,6 +2,7 @@
 // A seeded random source whose numbers are the same on every platform and standard library
 // (std::uniform_real_distribution is not specified bit for bit).
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <random>
 
@@ -17,5 +18,13 @@ class Random {
  private:
   std::mt19937_64 engine_;
 };
+
+// A uniform random point in the unit ball, by rejection (the same sequence everywhere).
+inline Eigen::Vector3d random_in_unit_ball(Random& rng) {
+  for (;;) {
+    Eigen::Vector3d v(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1));
+    if (v.squaredNorm() <= 1.0) return v;
+  }
+}
 
 }  // namespace fragsim

@@ -288,6 +288,35 @@ def check_viewer(driver, screenshot):
     return problems
 
 
+def launch(chromedriver, prefix):
+    """Starts chromedriver on a free port with a fresh profile folder. Returns (driver, proc,
+    profile, log_path); open_session then starts Chromium, and shut_down ends them all."""
+    profile = tempfile.mkdtemp(prefix=prefix)
+    port = free_port()
+    log_path = os.path.join(profile, "chromedriver.log")
+    with open(log_path, "w") as log:
+        proc = subprocess.Popen([chromedriver, "--port=%d" % port], stdout=log,
+                                stderr=subprocess.STDOUT)
+    return WebDriver(port), proc, profile, log_path
+
+
+def open_session(driver, proc, chromium, profile, window):
+    """A headless Chromium session (CHROMIUM_FLAGS, the profile, window "W,H", the browser log
+    kept) once chromedriver answers."""
+    wait_ready(driver, proc)
+    caps = {
+        "browserName": "chrome",
+        "goog:chromeOptions": {
+            "binary": chromium,
+            "args": CHROMIUM_FLAGS + ["--user-data-dir=" + os.path.join(profile, "user"),
+                                      "--window-size=" + window],
+        },
+        "goog:loggingPrefs": {"browser": "ALL"},
+    }
+    driver.session = driver.call("POST", "/session",
+                                 {"capabilities": {"alwaysMatch": caps}}, timeout=120)["sessionId"]
+
+
 def shut_down(driver, proc, profile):
     """Ends the browser session, chromedriver and the profile folder, whatever state they are in."""
     if driver.session:
@@ -309,29 +338,11 @@ def check(page, screenshot, width, chromium, chromedriver):
     if not page.is_file():
         return ["%s: no such file" % page], None
     report_dir = page.parent.as_uri() + "/"
-    profile = tempfile.mkdtemp(prefix="fragsim-chromium-")
-    port = free_port()
-    log_path = os.path.join(profile, "chromedriver.log")
-    with open(log_path, "w") as log:
-        proc = subprocess.Popen([chromedriver, "--port=%d" % port], stdout=log,
-                                stderr=subprocess.STDOUT)
-    driver = WebDriver(port)
+    driver, proc, profile, log_path = launch(chromedriver, "fragsim-chromium-")
     problems = []
     facts = None
     try:
-        wait_ready(driver, proc)
-        caps = {
-            "browserName": "chrome",
-            "goog:chromeOptions": {
-                "binary": chromium,
-                "args": CHROMIUM_FLAGS + ["--user-data-dir=" + os.path.join(profile, "user"),
-                                          "--window-size=%d,900" % width],
-            },
-            "goog:loggingPrefs": {"browser": "ALL"},
-        }
-        driver.session = driver.call("POST", "/session",
-                                     {"capabilities": {"alwaysMatch": caps}}, timeout=120)[
-            "sessionId"]
+        open_session(driver, proc, chromium, profile, "%d,900" % width)
         driver.call("POST", driver.s("/url"), {"url": page.as_uri()}, timeout=120)
         facts = driver.call("POST", driver.s("/execute/sync"), {"script": PAGE_PROBE, "args": []})
 

@@ -21,12 +21,9 @@ Usage: page_test.py PAGE.html SCREENSHOT.png [--seeds N] [--pieces N] [--steps N
 """
 
 import argparse
-import os
 import pathlib
 import shutil
-import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "browser"))
@@ -165,27 +162,10 @@ def run(args):
     page = pathlib.Path(args.page).resolve()
     if not page.is_file():
         return ["%s: no such file" % page]
-    profile = tempfile.mkdtemp(prefix="fragsim-page-")
-    port = cr.free_port()
-    log_path = os.path.join(profile, "chromedriver.log")
-    with open(log_path, "w") as log:
-        proc = subprocess.Popen([args.chromedriver, "--port=%d" % port], stdout=log,
-                                stderr=subprocess.STDOUT)
-    driver = cr.WebDriver(port)
+    driver, proc, profile, log_path = cr.launch(args.chromedriver, "fragsim-page-")
     problems = []
     try:
-        cr.wait_ready(driver, proc)
-        caps = {
-            "browserName": "chrome",
-            "goog:chromeOptions": {
-                "binary": args.chromium,
-                "args": cr.CHROMIUM_FLAGS + ["--user-data-dir=" + os.path.join(profile, "user"),
-                                             "--window-size=1100,1000"],
-            },
-            "goog:loggingPrefs": {"browser": "ALL"},
-        }
-        driver.session = driver.call("POST", "/session",
-                                     {"capabilities": {"alwaysMatch": caps}}, timeout=120)["sessionId"]
+        cr.open_session(driver, proc, args.chromium, profile, "1100,1000")
         driver.call("POST", driver.s("/timeouts"), {"script": 600000})
         driver.call("POST", driver.s("/url"), {"url": page.as_uri() + "?test=1"}, timeout=120)
         wait_for_page(driver)
