@@ -29,8 +29,8 @@ std::optional<std::string> real_rule(double v, const Range& range) {
 
 std::optional<std::string> real_or_inf_rule(double v, const Range& range) {
   if (v == std::numeric_limits<double>::infinity()) return std::nullopt;
-  if (!std::isfinite(v)) return "must be finite";
-  if (!range.contains(v)) return range.text() + ", or inf";
+  // -inf and nan break the rule as a number out of range does: the message says the rule.
+  if (!std::isfinite(v) || !range.contains(v)) return range.text() + ", or inf";
   return std::nullopt;
 }
 

@@ -88,8 +88,7 @@ Key<Owner> real_or_inf(std::string name, std::string_view unit, std::string_view
                        double Owner::*m, Range range) {
   return {std::move(name), help_text({unit, help}),
           [m, range](Owner& o, const std::string& text) {
-            const std::string t = trim(text);
-            const double v = t == "inf" ? std::numeric_limits<double>::infinity() : parse_double(t);
+            const double v = parse_double_or_inf(text);
             if (auto rule = real_or_inf_rule(v, range)) throw ValueError{*rule};
             o.*m = v;
           },

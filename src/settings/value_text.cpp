@@ -26,6 +26,18 @@ double parse_double(const std::string& text) {
   return v;
 }
 
+double parse_double_or_inf(const std::string& text) {
+  std::string s = trim(text);
+  // from_chars reads "inf" and "infinity" in any case, but not the '+' strtod also takes.
+  if (s.size() > 1 && s[0] == '+' && (s[1] == 'i' || s[1] == 'I')) s.erase(0, 1);
+  double v = 0.0;
+  const auto res = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (s.empty() || res.ec != std::errc() || res.ptr != s.data() + s.size()) {
+    throw ValueError{"not a number"};
+  }
+  return v;
+}
+
 long long parse_integer(const std::string& text) {
   const std::string s = trim(text);
   long long v = 0;

@@ -17,7 +17,11 @@ struct ValueError {
 
 std::string trim(const std::string& s);
 
-double parse_double(const std::string& text);      // finite
+double parse_double(const std::string& text);  // finite
+// A number as parse_double reads it, or +infinity spelled as strtod accepts it: "inf" or
+// "infinity" in any case, with or without a leading '+'. Other non-finite text (-inf, nan) is
+// returned as it reads, for the key's rule to refuse with its range.
+double parse_double_or_inf(const std::string& text);
 long long parse_integer(const std::string& text);  // whole
 Eigen::Vector3d parse_vec3(const std::string& text);
 std::string format_vec3(const Eigen::Vector3d& v);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
@@ -28,21 +30,65 @@ std::string trim(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
-std::vector<std::string> split(const std::string& line) {
+// One line's cells as RFC 4180 reads them: a cell in double quotes (spreadsheets and pandas
+// quote every cell) may hold commas, and "" in it stands for one quote. Spaces around a cell are
+// dropped. Nothing for a quote left open, or text after a closing quote.
+std::optional<std::vector<std::string>> split(const std::string& line) {
   std::vector<std::string> cells;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) cells.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') cells.emplace_back();
-  return cells;
+  std::size_t at = 0;
+  for (;;) {
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+    std::string cell;
+    if (at < line.size() && line[at] == '"') {
+      for (++at;; ++at) {
+        if (at == line.size()) return std::nullopt;
+        if (line[at] != '"') {
+          cell += line[at];
+        } else if (at + 1 < line.size() && line[at + 1] == '"') {
+          cell += '"';
+          ++at;
+        } else {
+          ++at;
+          break;
+        }
+      }
+      while (at < line.size() && (line[at] == ' ' || line[at] == '\t' || line[at] == '\r')) ++at;
+      if (at < line.size() && line[at] != ',') return std::nullopt;
+    } else {
+      const std::size_t end = std::min(line.find(',', at), line.size());
+      cell = trim(line.substr(at, end - at));
+      at = end;
+    }
+    cells.push_back(cell);
+    if (at == line.size()) return cells;
+    ++at;  // the comma
+  }
 }
 
-// A header name written as a quoted CSV field ("t_s"), as spreadsheets and some exporters save.
-std::string unquoted(const std::string& name) {
-  if (name.size() >= 2 && name.front() == '"' && name.back() == '"') {
-    return name.substr(1, name.size() - 2);
+// What a track in other units or axes looks like when read as fragsim's own, and the key that
+// reads it right: a speed about 10, 100 or 1000 times the bound (decimetres, centimetres as
+// Unreal writes, millimetres), or up vectors along the file's z. Empty when neither fits.
+std::string frame_hint(double speed_mps, double max_speed_mps, const Eigen::Vector3d& file_up,
+                       const AxisConvention& frame) {
+  std::string hint;
+  if (frame.unit_m == 1.0 && max_speed_mps > 0.0) {
+    const double ratio = speed_mps / max_speed_mps;
+    for (const auto& [times, unit] :
+         {std::pair{1000.0, "0.001 (millimetres)"}, std::pair{100.0, "0.01 (centimetres)"},
+          std::pair{10.0, "0.1 (decimetres)"}}) {
+      if (ratio > 0.3 * times && ratio < 3.0 * times) {
+        hint = "; about " + format_double(times) + " times the bound: a track in other units " +
+               "needs camera.track_unit_m = " + unit;
+        break;
+      }
+    }
   }
-  return name;
+  if (frame.up == UpAxis::kY && std::abs(file_up.z()) > 0.9) {
+    hint +=
+        "; its up vectors point along z: a Z-up track (Unreal, Blender) needs "
+        "camera.track_up = z";
+  }
+  return hint;
 }
 
 std::string expected_header() {
@@ -84,8 +130,9 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
     ++number_of_line;
     if (!trim(line).empty()) {
       header_line = trim(line);
-      header = split(line);
-      for (std::string& name : header) name = unquoted(name);
+      // A header that is not RFC 4180 (names quoted and split on ';', as some locales' spreadsheets
+      // write) reads as one odd name, which the missing column's message shows.
+      header = split(line).value_or(std::vector<std::string>{header_line});
     }
   }
   if (header.empty()) throw InputError(origin + ": empty camera track (expected a header row)");
@@ -116,7 +163,9 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
   while (std::getline(in, line)) {
     ++number_of_line;
     if (trim(line).empty()) continue;
-    const std::vector<std::string> cells = split(line);
+    const auto split_cells = split(line);
+    if (!split_cells) fail("a quoted cell is not closed, or has text after its closing quote");
+    const std::vector<std::string>& cells = *split_cells;
     if (cells.size() != header.size()) {
       fail(std::to_string(cells.size()) + " cells, the header has " +
            std::to_string(header.size()));
@@ -163,9 +212,11 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
       const double speed_mps = (s.eye_m - prev.eye_m).norm() / (s.t_s - prev.t_s);
       // A replayed path run moves at exactly its speed, up to the last bit of the samples.
       if (speed_mps > max_speed_mps * (1.0 + 1e-9) + 1e-12) {
-        fail("speed " + format_double(speed_mps) + " m/s between t = " + format_double(prev.t_s) +
-             " s and t = " + format_double(s.t_s) +
-             " s is above camera.max_speed_mps = " + format_double(max_speed_mps));
+        fail(
+            "speed " + format_double(speed_mps) + " m/s between t = " + format_double(prev.t_s) +
+            " s and t = " + format_double(s.t_s) +
+            " s is above camera.max_speed_mps = " + format_double(max_speed_mps) +
+            frame_hint(speed_mps, max_speed_mps, Eigen::Vector3d(v[7], v[8], v[9]), reading.frame));
       }
     }
     samples.push_back(s);

@@ -44,6 +44,11 @@ const std::vector<Rule>& rules() {
          if (s.object.mesh_file.empty()) return std::nullopt;
          return "the pieces come from object.mesh_file, as the file makes them";
        }},
+      {{"object.mesh_unit_m", "object.mesh_up", "object.mesh_handedness"},
+       [](const Scene& s) -> std::optional<std::string> {
+         if (!s.object.mesh_file.empty()) return std::nullopt;
+         return "only object.mesh_file is read in these units and axes, and it is not set";
+       }},
       {{"object.pieces", "object.cluster"},
        [](const Scene& s) -> std::optional<std::string> {
          if (!s.object.mesh_file.empty() || s.object.pattern != DebrisPattern::kGrid) {

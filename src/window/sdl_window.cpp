@@ -66,6 +66,13 @@ bool command_for(SDL_Scancode code, PlayEvent& e) {
   }
 }
 
+// A variable set to an empty string names nothing: it counts as unset, as a shell's `VAR=` does
+// for most programs (SDL itself then probes its drivers, down to those that draw nowhere).
+bool named_in_environment(const char* name) {
+  const char* value = SDL_getenv(name);
+  return value != nullptr && *value != '\0';
+}
+
 }  // namespace
 
 SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : title_(title) {
@@ -73,7 +80,8 @@ SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : ti
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
   // No display named and no driver asked for: say so in one line, before SDL probes its drivers
   // (and a Wayland library prints its own complaints).
-  if (!SDL_getenv("SDL_VIDEODRIVER") && !SDL_getenv("DISPLAY") && !SDL_getenv("WAYLAND_DISPLAY")) {
+  if (!named_in_environment("SDL_VIDEODRIVER") && !named_in_environment("DISPLAY") &&
+      !named_in_environment("WAYLAND_DISPLAY")) {
     throw NoDisplay(
         "no display to open a window on (DISPLAY and WAYLAND_DISPLAY are unset); set DISPLAY, "
         "run under Xvfb, or name an SDL driver in SDL_VIDEODRIVER");
@@ -86,7 +94,8 @@ SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : ti
   // window nobody sees is no display, unless SDL_VIDEODRIVER asked for it.
   const char* driver = SDL_GetCurrentVideoDriver();
   const std::string name = driver ? driver : "";
-  if (!SDL_getenv("SDL_VIDEODRIVER") && (name == "offscreen" || name == "dummy" || name.empty())) {
+  if (!named_in_environment("SDL_VIDEODRIVER") &&
+      (name == "offscreen" || name == "dummy" || name.empty())) {
     SDL_Quit();
     throw NoDisplay("no display to open a window on (SDL found only its '" + name +
                     "' driver); set DISPLAY, or run under Xvfb");

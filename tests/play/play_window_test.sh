@@ -36,6 +36,19 @@ set -e
 [ "$(wc -l <"$tmp/nodisplay.err")" -eq 1 ] || fail "without a display: not one line: $(cat "$tmp/nodisplay.err")"
 grep -q "^fragsim play: no display" "$tmp/nodisplay.err" || fail "without a display: $(cat "$tmp/nodisplay.err")"
 
+# The variables set to empty strings name nothing: the same one line, never a window nobody sees
+# (an empty SDL_VIDEODRIVER once let SDL fall back on its offscreen driver and wait forever).
+set +e
+env -u WAYLAND_DISPLAY DISPLAY= SDL_VIDEODRIVER= timeout 20 "$fragsim" play --scene "$scene" \
+  >"$tmp/emptyvars.out" 2>"$tmp/emptyvars.err"
+status=$?
+set -e
+[ "$status" -eq 2 ] || fail "with DISPLAY and SDL_VIDEODRIVER empty: exit status $status, expected 2"
+[ "$(wc -l <"$tmp/emptyvars.err")" -eq 1 ] ||
+  fail "with empty variables: not one line: $(cat "$tmp/emptyvars.err")"
+grep -q "^fragsim play: no display" "$tmp/emptyvars.err" ||
+  fail "with empty variables: $(cat "$tmp/emptyvars.err")"
+
 # Xvfb picks a free display itself and writes its number to the descriptor.
 exec 3>"$tmp/display"
 Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp >"$tmp/xvfb.log" 2>&1 &

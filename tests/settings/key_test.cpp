@@ -84,9 +84,23 @@ TEST(SettingsKey, NonFiniteTextIsRefused) {
     EXPECT_EQ(text_error("length_m", t),
               std::string("probe.ini:4: length_m = '") + t + "': must be finite");
   }
-  EXPECT_EQ(text_error("rate_hz", "nan"), "probe.ini:4: rate_hz = 'nan': must be finite");
+  EXPECT_EQ(text_error("rate_hz", "nan"),
+            "probe.ini:4: rate_hz = 'nan': must be in (0, 100], or inf");
+  EXPECT_EQ(text_error("rate_hz", "-inf"),
+            "probe.ini:4: rate_hz = '-inf': must be in (0, 100], or inf");
   EXPECT_EQ(text_error("length_m", "two"), "probe.ini:4: length_m = 'two': not a number");
   EXPECT_EQ(text_error("length_m", "1e400"), "probe.ini:4: length_m = '1e400': not a number");
+}
+
+// Every spelling strtod takes for +infinity (C11 7.22.1.3: INF or INFINITY, ignoring case, with
+// an optional sign) is a key's inf.
+TEST(SettingsKey, InfinityInEverySpellingStrtodAccepts) {
+  for (const char* t : {"inf", "Inf", "INF", "infinity", "Infinity", "INFINITY", "iNfInItY", "+inf",
+                        "+Infinity", " inf "}) {
+    EXPECT_EQ(text_error("rate_hz", t), "") << t;
+  }
+  EXPECT_EQ(text_error("rate_hz", "infinit"), "probe.ini:4: rate_hz = 'infinit': not a number");
+  EXPECT_EQ(text_error("rate_hz", "++inf"), "probe.ini:4: rate_hz = '++inf': not a number");
 }
 
 TEST(SettingsKey, BadChoiceListsTheChoices) {
@@ -105,7 +119,7 @@ TEST(SettingsKey, ValueSetInCodeIsCheckedByTheSameRule) {
   p.rate_hz = std::numeric_limits<double>::infinity();
   EXPECT_EQ(value_error(p), "");
   p.rate_hz = -std::numeric_limits<double>::infinity();
-  EXPECT_EQ(value_error(p), "rate_hz = -inf: must be finite");
+  EXPECT_EQ(value_error(p), "rate_hz = -inf: must be in (0, 100], or inf");
   p = {};
   p.count = 0;
   EXPECT_EQ(value_error(p), "count = 0: must be a whole number in [1, 5]");

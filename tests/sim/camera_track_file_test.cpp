@@ -264,6 +264,49 @@ TEST(CameraTrackFile, HeaderMessagesShowWhatWasReadAndQuotedNamesAreRead) {
   EXPECT_EQ(s[0].eye_m, Eigen::Vector3d(0, 1, 0));
 }
 
+// Spreadsheets and pandas quote every cell: read as RFC 4180 says, a quoted cell may hold commas
+// and "" for a quote; a quote left open is named.
+TEST(CameraTrackFile, QuotedCellsAreReadAsRfc4180Says) {
+  std::string quoted;
+  for (const char* name : {"t_s", "eye_x_m", "eye_y_m", "eye_z_m", "forward_x", "forward_y",
+                           "forward_z", "up_x", "up_y", "up_z", "note"}) {
+    quoted += (quoted.empty() ? "\"" : ",\"") + std::string(name) + "\"";
+  }
+  const std::string row =
+      "\"0.0\",\"0\",\"1\",\"0\",\"0\",\"0\",\"-1\",\"0\",\"1\",\"0\",\"a, \"\"b\"\"\"\n"
+      "\"0.5\", \"1\" ,\"1\",\"0\",\"0\",\"0\",\"-1\",\"0\",\"1\",\"0\",\"\"\n";
+  const auto s = parse_camera_track(quoted + "\n" + row, "t.csv", "", 3.0);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[1].t_s, 0.5);
+  EXPECT_EQ(s[1].eye_m, Eigen::Vector3d(1, 1, 0));
+  EXPECT_EQ(error_of(kHeader + "\n\"0,0,1,0,0,0,-1,0,1,0\n"),
+            "track.csv:2: a quoted cell is not closed, or has text after its closing quote");
+  EXPECT_EQ(error_of(kHeader + "\n\"0\"x,0,1,0,0,0,-1,0,1,0\n"),
+            "track.csv:2: a quoted cell is not closed, or has text after its closing quote");
+}
+
+// A track in centimetres or millimetres, or Z-up, read as fragsim's own is far too fast: the
+// message says which key reads it right.
+TEST(CameraTrackFile, TooFastTracksNameTheUnitOrAxisKey) {
+  // 50 units in 0.1 s: 500 m/s, 167 times the 3 m/s bound: centimetres.
+  EXPECT_EQ(error_of(kHeader + "\n0,0,100,0,0,0,-1,0,1,0\n0.1,50,100,0,0,0,-1,0,1,0\n"),
+            "track.csv:3: speed 500 m/s between t = 0 s and t = 0.1 s is above "
+            "camera.max_speed_mps = 3; about 100 times the bound: a track in other units needs "
+            "camera.track_unit_m = 0.01 (centimetres)");
+  // 3,000 m/s: millimetres.
+  EXPECT_NE(error_of(kHeader + "\n0,0,1,0,0,0,-1,0,1,0\n0.1,300,1,0,0,0,-1,0,1,0\n")
+                .find("3000 m/s between t = 0 s and t = 0.1 s is above camera.max_speed_mps = 3; "
+                      "about 1000 times the bound: a track in other units needs "
+                      "camera.track_unit_m = 0.001 (millimetres)"),
+            std::string::npos);
+  // Up along z, as Unreal and Blender write a camera: the up axis's key too.
+  EXPECT_EQ(error_of(kHeader + "\n0,0,0,160,0,1,0,0,0,1\n0.1,50,0,160,0,1,0,0,0,1\n"),
+            "track.csv:3: speed 500 m/s between t = 0 s and t = 0.1 s is above "
+            "camera.max_speed_mps = 3; about 100 times the bound: a track in other units needs "
+            "camera.track_unit_m = 0.01 (centimetres); its up vectors point along z: a Z-up "
+            "track (Unreal, Blender) needs camera.track_up = z");
+}
+
 // A NUL byte in a cell no longer cuts the message short.
 TEST(CameraTrackFile, ControlCharactersInACellAreShown) {
   const std::string row("0,0,1,0\0x,0,0,-1,0,1,0\n", 23);

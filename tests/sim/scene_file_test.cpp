@@ -269,6 +269,19 @@ TEST(SceneFile, KeysWithoutEffectAreWarnedWhereSet) {
                   .empty());
 }
 
+// The mesh's unit and axis keys without a mesh file did nothing, silently: warned as the track's
+// keys are outside track mode.
+TEST(SceneFile, MeshKeysWithoutAMeshAreWarned) {
+  const std::string why =
+      " has no effect: only object.mesh_file is read in these units and "
+      "axes, and it is not set";
+  EXPECT_EQ(warnings_of("[object]\nmesh_unit_m = 0.01\nmesh_up = z\n",
+                        {{"object.mesh_handedness", "left"}}),
+            (std::vector<std::string>{"s.ini:2: object.mesh_unit_m" + why,
+                                      "s.ini:3: object.mesh_up" + why,
+                                      "--object.mesh_handedness: object.mesh_handedness" + why}));
+}
+
 // object.size_m with a mesh file is ignored: the pieces are the file's.
 TEST(SceneFile, CubeKeysWithAMeshAreWarned) {
   const std::string mesh = ::testing::TempDir() + "/fragsim_tet.obj";

@@ -1390,9 +1390,12 @@ void TwoBoxClearance::set_workers(int workers) {
   const auto wanted = static_cast<std::size_t>(std::max(workers, 1));
   workers_.reserve(wanted);
   while (workers_.size() < wanted) {
-    workers_.emplace_back(mem_);
-    workers_.back().reserve(static_cast<std::size_t>(kChunk));
-    workers_.back().unsettled.resize(static_cast<std::size_t>(kChunk));
+    // Made whole before it joins: an allocation that fails half way must not leave a work space
+    // without its unsettled list for the next run to write through.
+    WorkSpace w(mem_);
+    w.reserve(static_cast<std::size_t>(kChunk));
+    w.unsettled.resize(static_cast<std::size_t>(kChunk));
+    workers_.push_back(std::move(w));  // within the reserve: no allocation, no throw
   }
 }
 
