@@ -1,4 +1,4 @@
-// The cost of the strategies' per-step work (project issue 6): the thesis's prediction per
+// The cost of the strategies' per-step work: the thesis's prediction per
 // fragment at t = 0, with and without the cheap rejection, on an aimed blast (front.ini) and on
 // undirected ones; and one whole step of `edge` and `edge-min` at t = 0 and at a later step.
 // Run: build/release/bench/fragsim_bench --benchmark_filter='Predict|StrategyStep|BM_Run'
@@ -181,7 +181,7 @@ BENCHMARK_CAPTURE(BM_StrategyStep, edge_min,
 
 // A strategy's steps over a whole run, replayed: the run is stepped once with the strategy,
 // every step's context kept, then each iteration steps a fresh strategy through all of them. The
-// statistic of issue 17 is this time over the run's physics time (the counter physics_ms, the
+// statistic reported is this time over the run's physics time (the counter physics_ms, the
 // same process): the strategy's share of the physics step over the run. The forces' checksum
 // counter shows a change to the strategy's code left its output as it was.
 double thread_cpu_ms() {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The physics scale curve (project issue 6): ODE time per step and peak memory from 1,000 to
+# The physics scale curve: ODE time per step and peak memory from 1,000 to
 # ~100,000 fragments, in three configurations, each point in its own process (bench/scale_curve.cpp),
 # written as one CSV and, when gnuplot is installed, drawn by data/plots/scale.gp.
 #

@@ -73,7 +73,7 @@ std::string without_new_columns(const std::string& csv) {
 // ball every orientation lies in; edge-min's row: dev_mean 0.0821 -> 0.2333 m, near 0, cam 0,
 // docs/camera_models.md section 2); with camera_turn_degps = 90 edge-min's row is as before.
 // Moved again, once, when quadratic roots became closed form and edge's contact searches started
-// from the last step's contact (geometry/first_root.cpp; issue 32): edge-min's dev_mean
+// from the last step's contact (geometry/first_root.cpp): edge-min's dev_mean
 // 0.23331067386 -> 0.23331068172 m (3.4e-8 relative), edge's 15.364363492272 -> 15.364363492275 m
 // (2e-13), every count and every other row the same bytes (docs/benchmarks.md, "The worst
 // frame").
@@ -92,7 +92,7 @@ TEST(Determinism, DefaultSceneSummaryHashIsPinned) {
 // end and summary.csv has a `deferred` column, it was 0x50a3f6ec292999a9: near 0, cam 0,
 // dev_mean 0.0720 m, dev_max 7.223 m, impulse 19.64 Ns, capped 8 as before (docs/camera_models.md,
 // section 8); with the `vanished_fragments` column (0) it is 0xf035873d9a7a04eb, the same bytes
-// otherwise. With closed-form quadratic roots (issue 32) the last bits moved: dev_mean
+// otherwise. With closed-form quadratic roots the last bits moved: dev_mean
 // 0.0720129229427 m (6e-13 relative), impulse 19.6383322792 Ns (7e-16), the counts the same.
 TEST(Determinism, ConstantCameraModelKeepsTheFirstEdgeMin) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/front.ini");

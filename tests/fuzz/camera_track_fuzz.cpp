@@ -1,4 +1,4 @@
-// libFuzzer target: the bytes are a camera track file's text for parse_camera_track (issue 16).
+// libFuzzer target: the bytes are a camera track file's text for parse_camera_track.
 //
 // Invariants, each a __builtin_trap() when broken:
 //  - bad input throws InputError and nothing else;

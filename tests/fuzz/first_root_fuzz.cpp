@@ -1,4 +1,4 @@
-// libFuzzer target: real_roots and first_nonpositive on a quartic over an interval (issue 5).
+// libFuzzer target: real_roots and first_nonpositive on a quartic over an interval.
 //
 // Input: 7 little-endian doubles c0 c1 c2 c3 c4 lo hi (bytes 0..55; missing bytes read as zero),
 // then an optional form byte. If its bit 0 is set, c0..c3 are read as roots r1..r4 and c4 as the

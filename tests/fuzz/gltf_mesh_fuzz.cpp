@@ -1,4 +1,4 @@
-// libFuzzer target: the bytes are a glTF mesh file for parse_pieces (issue 16): binary (.glb) when
+// libFuzzer target: the bytes are a glTF mesh file for parse_pieces: binary (.glb) when
 // they start with glTF's magic "glTF", else JSON (.gltf); the checks are mesh_fuzz_checks.hpp's.
 // External buffers are looked up in a folder that does not exist, so only data: URIs and the
 // .glb's own chunk can feed the reader.

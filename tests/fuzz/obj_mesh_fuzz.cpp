@@ -1,4 +1,4 @@
-// libFuzzer target: the bytes are an .obj mesh file for parse_pieces (issue 16); the checks are
+// libFuzzer target: the bytes are an .obj mesh file for parse_pieces; the checks are
 // mesh_fuzz_checks.hpp's.
 
 #include <cstddef>

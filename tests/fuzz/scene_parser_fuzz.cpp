@@ -1,4 +1,4 @@
-// libFuzzer target: the bytes are a scene file's text for parse_scene (issue 5).
+// libFuzzer target: the bytes are a scene file's text for parse_scene.
 //
 // Invariants, each a __builtin_trap() when broken:
 //  - bad input throws SceneError and nothing else (any other exception is a bug);

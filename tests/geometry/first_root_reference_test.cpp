@@ -107,7 +107,7 @@ CLD re(LD x) {
 
 // Strobach (J. Comput. Appl. Math. 234, 2010), Flocke (ACM TOMS 41(4), 2015) and the
 // collection of Orellana & De Michele (ACM TOMS 46(2), 2020, cases 1-22 by their numbers), plus
-// the tangent and clustered cases of issue 4.
+// tangent and clustered roots of our own.
 std::vector<HardCase> hard_cases() {
   return {
       {"(x-1)^4", {re(1), re(1), re(1), re(1)}},

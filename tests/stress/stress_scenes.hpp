@@ -1,5 +1,5 @@
 #pragma once
-// The stress suite's scenes (project issue 5): fixed corner cases and seeded random scenes that
+// The stress suite's scenes: fixed corner cases and seeded random scenes that
 // span the extremes of docs/method.md section 7. Every case is a plain Scene, so a failure is
 // reproduced from the printed INI alone (`fragsim compare --scene case.ini`).
 

@@ -1,4 +1,4 @@
-// Numerical stress (project issue 5, docs/method.md section 7): every strategy on seeded scenes at
+// Numerical stress (docs/method.md section 7): every strategy on seeded scenes at
 // the extremes must keep every number finite, ODE quiet, forces within their caps and no fragment
 // above its energy budget (health_observer.hpp); and the default scene run for a minute must come
 // to rest on the ground and stay there.
