@@ -28,6 +28,8 @@
 #include "experiments/process_runner.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/output_folder.hpp"
+#include "io/output_set.hpp"
 #include "metrics/trajectory_writer.hpp"
 #include "report/csv_export.hpp"
 #include "report/gltf_bake.hpp"
@@ -81,7 +83,7 @@ void add_output_options(po::options_description& own) {
 // that cannot be written fails at once; nothing appears unless every bake fits the limit.
 struct BakeRequest {
   std::vector<std::string> paths;  // in `names` order
-  std::vector<std::unique_ptr<AtomicFile>> files;
+  OutputSet files;                 // the same order
   std::size_t limit_bytes = 0;
   GltfBakeRecorder recorder;
 };
@@ -129,7 +131,7 @@ std::unique_ptr<BakeRequest> bake_request(const cli::ParsedCommand& p,
       throw UsageError("--bake " + file + ": exists (use --force to overwrite)");
     }
     try {
-      bake->files.push_back(std::make_unique<AtomicFile>(file));
+      bake->files.add(file);
     } catch (const std::runtime_error& e) {
       throw UsageError(std::string("--bake ") + e.what());
     }
@@ -138,7 +140,8 @@ std::unique_ptr<BakeRequest> bake_request(const cli::ParsedCommand& p,
   return bake;
 }
 
-// Writes each strategy's bake, or none if one is over the limit.
+// Writes every strategy's bake, or none: none if one is over the limit or one cannot be written
+// whole (a full disk).
 void write_bakes(BakeRequest& bake, const std::vector<std::string>& names) {
   std::vector<const std::string*> bytes;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -155,11 +158,23 @@ void write_bakes(BakeRequest& bake, const std::vector<std::string>& names) {
     }
     bytes.push_back(&it->bytes);
   }
+  for (std::size_t i = 0; i < names.size(); ++i) bake.files.out(i) << *bytes[i];
+  bake.files.commit();
   for (std::size_t i = 0; i < names.size(); ++i) {
-    bake.files[i]->out() << *bytes[i];
-    bake.files[i]->commit();
     std::cout << "wrote " << bake.paths[i] << " ("
               << cli::fixed(static_cast<double>(bytes[i]->size()) / 1e6, 1) << " MB)\n";
+  }
+}
+
+// The folder of output option `option` (--csv, --report), or nullopt when not given.
+std::optional<OutputFolder> output_folder(const cli::ParsedCommand& p, const std::string& option) {
+  if (!p.options.count(option)) return std::nullopt;
+  const std::string dir = p.options[option].as<std::string>();
+  if (dir.empty()) throw UsageError("--" + option + ": empty folder name");
+  try {
+    return std::optional<OutputFolder>(std::in_place, dir, p.options.count("force") > 0);
+  } catch (const std::runtime_error& e) {
+    throw UsageError("--" + option + ": " + e.what());
   }
 }
 
@@ -173,49 +188,34 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
     }
   }
   const std::optional<cli::SheetRequest> sheet = cli::sheet_request(p);
-  std::optional<std::string> dir;
-  if (p.options.count("csv")) {
-    dir = p.options["csv"].as<std::string>();
-    if (dir->empty()) throw UsageError("--csv: empty folder name");
-    try {
-      prepare_output_dir(*dir, p.options.count("force") > 0);
-    } catch (const std::runtime_error& e) {
-      throw UsageError(std::string("--csv: ") + e.what());
-    }
-  } else if (p.options.count("trajectories")) {
+  if (p.options.count("trajectories") && !p.options.count("csv")) {
     throw UsageError("--trajectories: needs --csv DIR");
   }
-  std::optional<std::string> report_dir;
-  if (p.options.count("report")) {
-    report_dir = p.options["report"].as<std::string>();
-    if (report_dir->empty()) throw UsageError("--report: empty folder name");
-    try {
-      prepare_output_dir(*report_dir, p.options.count("force") > 0);
-    } catch (const std::runtime_error& e) {
-      throw UsageError(std::string("--report: ") + e.what());
-    }
-  }
+  // Declared before every file written into them: a failure removes the files first, then the
+  // folders this run created.
+  std::optional<OutputFolder> csv_folder = output_folder(p, "csv");
+  std::optional<OutputFolder> report_folder = output_folder(p, "report");
   const bool occlusion = p.options.count("no-occlusion") == 0;
 
-  std::optional<AtomicFile> traj_file;
+  OutputSet csv_files;
   std::optional<TrajectoryWriter> traj;
-  if (dir && p.options.count("trajectories")) {
-    traj_file.emplace((std::filesystem::path(*dir) / "trajectories.csv").string());
-    traj.emplace(traj_file->out());
+  if (csv_folder && p.options.count("trajectories")) {
+    traj.emplace(
+        csv_files.add((std::filesystem::path(csv_folder->path()) / "trajectories.csv").string()));
   }
   const int jobs = cli::jobs_option(p.options);
   // The report's contact sheet draws from the same recorder as --sheet (steps may repeat).
   std::vector<int> recorded_steps = sheet ? sheet->steps : std::vector<int>{};
-  if (report_dir) {
+  if (report_folder) {
     const std::vector<int> report_steps = report_sheet_steps(p.scene);
     recorded_steps.insert(recorded_steps.end(), report_steps.begin(), report_steps.end());
   }
   std::optional<FrameRecorder> recorder;
-  if (sheet || report_dir) recorder.emplace(recorded_steps);
+  if (sheet || report_folder) recorder.emplace(recorded_steps);
   // The report's 3D view: recorded only when this build can draw it.
   const BundledThreeJs three = bundled_three_js();
   std::optional<ViewerRecorder> viewer;
-  if (report_dir) {
+  if (report_folder) {
     viewer.emplace(viewer_sample_every(p.scene.fragment_count(), p.scene.step_count(),
                                        static_cast<int>(names.size())));
   }
@@ -229,20 +229,22 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   cli::print_report(p.scene, runs, std::cout);
   if (bake) write_bakes(*bake, names);
   if (sheet) cli::write_sheet(*sheet, p.scene, *recorder, names, std::cout);
-  if (report_dir) {
+  if (report_folder) {
     const std::vector<std::string> written =
-        write_html_report(*report_dir, p.scene, runs, *recorder, *viewer, three);
+        write_html_report(report_folder->path(), p.scene, runs, *recorder, *viewer, three);
+    report_folder->keep();
     if (!three.available())
       std::cerr << "fragsim: --report: " << viewer_missing_text(three) << "\n";
     std::cout << "wrote";
     for (const std::string& f : written) std::cout << " " << f;
     std::cout << "\n";
   }
-  if (dir) {
-    write_comparison_csv(*dir, p.scene, runs);
-    if (traj_file) traj_file->commit();
-    std::cout << "wrote " << *dir << "/{summary,steps,camera,timing}.csv, config.ini"
-              << (traj_file ? ", trajectories.csv" : "") << "\n";
+  if (csv_folder) {
+    add_comparison_csv(csv_files, csv_folder->path(), p.scene, runs);
+    csv_files.commit();
+    csv_folder->keep();
+    std::cout << "wrote " << csv_folder->path() << "/{summary,steps,camera,timing}.csv, config.ini"
+              << (traj ? ", trajectories.csv" : "") << "\n";
   }
   return 0;
 }

@@ -6,13 +6,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "experiments/evaluation.hpp"
 #include "experiments/median.hpp"
+#include "io/output_folder.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
-#include "report/csv_export.hpp"
 #include "sim/scene_strategies.hpp"
 
 namespace fragsim::cli {
@@ -141,8 +142,9 @@ int cmd_render(const std::vector<std::string>& args) {
   FrameStyle style;
   std::tie(style.width_px, style.height_px) = parse_size(p.options["size"].as<std::string>());
   style.overlays = parse_overlays(p.options["overlays"].as<std::string>());
+  std::optional<OutputFolder> folder;
   try {
-    prepare_output_dir(dir, p.options.count("force") > 0);
+    folder.emplace(dir, p.options.count("force") > 0);
   } catch (const std::runtime_error& e) {
     throw UsageError(std::string("--out: ") + e.what());
   }
@@ -161,14 +163,26 @@ int cmd_render(const std::vector<std::string>& args) {
   FrameRenderer renderer(p.scene, style);
   std::vector<double> render_ms;
   std::vector<double> write_ms;
-  for (const RecordedFrame& f : frames) {
-    const auto t0 = Clock::now();
-    const Image image = renderer.render(f.view());
-    const auto t1 = Clock::now();
-    write_png((fs::path(dir) / frame_name(f.step)).string(), image);
-    render_ms.push_back(ms(t1 - t0));
-    write_ms.push_back(ms(Clock::now() - t1));
+  // Frames go one at a time (a long run has thousands, more than can wait as open temporary
+  // files), so a failure part way removes the frames this run wrote: none of a failed output
+  // remains.
+  std::vector<std::string> written;
+  try {
+    for (const RecordedFrame& f : frames) {
+      const auto t0 = Clock::now();
+      const Image image = renderer.render(f.view());
+      const auto t1 = Clock::now();
+      written.push_back((fs::path(dir) / frame_name(f.step)).string());
+      write_png(written.back(), image);
+      render_ms.push_back(ms(t1 - t0));
+      write_ms.push_back(ms(Clock::now() - t1));
+    }
+  } catch (...) {
+    std::error_code ec;
+    for (const std::string& path : written) fs::remove(path, ec);
+    throw;
   }
+  folder->keep();
   std::cout << "wrote " << frames.size() << " frames of " << strategy << " (" << style.width_px
             << "x" << style.height_px << ") to " << dir << "/";
   if (!frames.empty()) {

@@ -17,7 +17,11 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ostream& out() { return out_; }
-  // Flushes, checks every write succeeded and renames into place; throws naming the path if not.
+  // Flushes and closes the temporary file, and checks every write succeeded; throws naming the
+  // path if not (a full disk shows here). Commit calls it; a set of files calls it on each before
+  // renaming any (OutputSet), so that a failure leaves none of them in place.
+  void finish();
+  // Finishes (if not yet) and renames into place; throws naming the path if either fails.
   void commit();
   const std::string& path() const { return path_; }
 
@@ -25,6 +29,7 @@ class AtomicFile {
   std::string path_;
   std::string temp_path_;
   std::ofstream out_;
+  bool finished_ = false;
   bool committed_ = false;
   int slot_ = -1;  // where the interrupt handler finds the temporary path
 };
@@ -33,6 +38,12 @@ class AtomicFile {
 // signal: an interrupted run leaves the old files or none, and no debris. (SIGKILL
 // cannot be caught; its debris is named PATH.tmp.PID.) Call once, from main.
 void remove_temporaries_on_interrupt();
+
+// Marks `path`, a folder this process created for its output, for removal by the interrupt
+// handler (after the temporary files, and only while empty). Returns a ticket for
+// forget_created_folder, or -1 when there is no room to track it.
+int track_created_folder(const std::string& path);
+void forget_created_folder(int ticket);
 
 // Writes `text` to `path` through an AtomicFile.
 void write_file_atomically(const std::string& path, const std::string& text);

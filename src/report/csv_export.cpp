@@ -5,7 +5,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "io/atomic_file.hpp"
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
 #include "sim/scene_file.hpp"
@@ -39,19 +38,6 @@ void append_vec(std::string& out, const Eigen::Vector3d& v) {
 }
 
 }  // namespace
-
-void prepare_output_dir(const std::string& dir, bool force) {
-  std::error_code ec;
-  if (fs::exists(dir, ec)) {
-    if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + ": exists and is not a folder");
-    if (!force && !fs::is_empty(dir, ec)) {
-      throw std::runtime_error(dir + ": folder exists and is not empty (use --force to overwrite)");
-    }
-    return;
-  }
-  fs::create_directories(dir, ec);
-  if (ec) throw std::runtime_error(dir + ": cannot create folder (" + ec.message() + ")");
-}
 
 std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs) {
   std::string out;
@@ -150,14 +136,14 @@ std::string timing_csv(const Scene& scene, const std::vector<Evaluation>& runs) 
   return out;
 }
 
-void write_comparison_csv(const std::string& dir, const Scene& scene,
-                          const std::vector<Evaluation>& runs) {
+void add_comparison_csv(OutputSet& files, const std::string& dir, const Scene& scene,
+                        const std::vector<Evaluation>& runs) {
   const fs::path d(dir);
-  write_file_atomically((d / "summary.csv").string(), summary_csv(scene, runs));
-  write_file_atomically((d / "steps.csv").string(), steps_csv(scene, runs));
-  write_file_atomically((d / "camera.csv").string(), camera_csv(scene, runs));
-  write_file_atomically((d / "timing.csv").string(), timing_csv(scene, runs));
-  write_file_atomically((d / "config.ini").string(), scene_to_ini(scene));
+  files.add((d / "summary.csv").string(), summary_csv(scene, runs));
+  files.add((d / "steps.csv").string(), steps_csv(scene, runs));
+  files.add((d / "camera.csv").string(), camera_csv(scene, runs));
+  files.add((d / "timing.csv").string(), timing_csv(scene, runs));
+  files.add((d / "config.ini").string(), scene_to_ini(scene));
 }
 
 std::vector<RunSummary> read_summary_csv(const std::string& path) {

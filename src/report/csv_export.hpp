@@ -9,17 +9,14 @@
 
 #include "experiments/evaluation.hpp"
 #include "geometry/camera_pose.hpp"
+#include "io/output_set.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {
 
-// Creates `dir` if needed. An existing folder with files in it is refused unless `force`
-// (std::runtime_error naming the folder).
-void prepare_output_dir(const std::string& dir, bool force);
-
-// Writes the five files into `dir`, each whole or not at all.
-void write_comparison_csv(const std::string& dir, const Scene& scene,
-                          const std::vector<Evaluation>& runs);
+// Adds the five files in `dir` to `files`, which the caller commits (all of them or none).
+void add_comparison_csv(OutputSet& files, const std::string& dir, const Scene& scene,
+                        const std::vector<Evaluation>& runs);
 
 std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs);

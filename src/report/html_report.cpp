@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
-#include "io/atomic_file.hpp"
 #include "io/number_format.hpp"
+#include "io/output_set.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/image.hpp"
 #include "report/html_escape.hpp"
@@ -396,12 +396,19 @@ std::vector<std::string> write_html_report(const std::string& dir, const Scene& 
   const std::string sheet_path = (fs::path(dir) / kSheetFile).string();
   const std::string page_path = (fs::path(dir) / "index.html").string();
   const std::string table_path = (fs::path(dir) / kTableFile).string();
-  write_png(sheet_path, sheet);
-  write_file_atomically(table_path, results_csv(results_table(scene, runs), false));
+  std::string sheet_png;
+  try {
+    sheet_png = encode_png(sheet);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(sheet_path + ": " + e.what());
+  }
   const auto [left, right] = report_viewer_pair(runs);
-  write_file_atomically(
-      page_path,
-      html_report(scene, runs, figure, viewer_section_html(scene, viewer, left, right, three)));
+  OutputSet files;
+  files.add(sheet_path, sheet_png);
+  files.add(table_path, results_csv(results_table(scene, runs), false));
+  files.add(page_path, html_report(scene, runs, figure,
+                                   viewer_section_html(scene, viewer, left, right, three)));
+  files.commit();
   return {page_path, sheet_path, table_path};
 }
 

@@ -51,7 +51,8 @@ std::pair<std::string, std::string> report_viewer_pair(const std::vector<Evaluat
 // Draws the contact sheet from `recorder` (rows: the runs' strategies, columns:
 // report_sheet_steps) into DIR/sheet.png, writes the page's table as DIR/table.csv, then
 // DIR/index.html with the 3D view of `viewer`'s runs drawn by `three` (without three.js, the
-// section says why instead); each file whole or not at all. DIR must exist (prepare_output_dir).
+// section says why instead); the three files appear together or not at all. DIR must exist
+// (OutputFolder).
 // Returns the paths written.
 std::vector<std::string> write_html_report(const std::string& dir, const Scene& scene,
                                            const std::vector<Evaluation>& runs,

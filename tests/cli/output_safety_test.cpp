@@ -6,6 +6,8 @@
 #include <signal.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -63,8 +65,8 @@ TEST(OutputSafety, InterruptedRunLeavesNoFileAndNoDebris) {
     const int status = run_fragsim_status(kRun + " --csv " + out.string(), signal_at(90, name));
     EXPECT_TRUE(died_of(status, std::string(name) == "TERM" ? SIGTERM : SIGINT))
         << name << ": wait status " << status;
-    ASSERT_TRUE(fs::exists(out));  // created before the run
-    expect_empty(out);
+    EXPECT_FALSE(fs::exists(out));  // created for the run, removed with it
+    expect_empty(tmp.path());
   }
 }
 
@@ -77,8 +79,8 @@ TEST(OutputSafety, InterruptedWorkersLeaveNoFileAndNoDebris) {
       run_fragsim_status(" compare --scene " + kScenes + "front.ini --jobs 2 --csv " + out.string(),
                          signal_at(210, "TERM"));
   EXPECT_TRUE(died_of(status, SIGTERM)) << "wait status " << status;
-  ASSERT_TRUE(fs::exists(out));
-  expect_empty(out);
+  EXPECT_FALSE(fs::exists(out));
+  expect_empty(tmp.path());
 }
 
 TEST(OutputSafety, InterruptedSweepLeavesNoFileAndNoDebris) {
@@ -142,6 +144,81 @@ TEST(OutputSafety, UnwritableFolderIsAOneLineError) {
   EXPECT_EQ(status, 2);
   const std::string out = read_all(out_file);
   EXPECT_NE(out.find("--csv: /proc/fragsim/cannot"), std::string::npos) << out;
+}
+
+// `args` run with a file-size limit of `limit_kib` (a full disk, for root too) and SIGXFSZ ignored
+// (so a write past it fails instead of killing): the exit code; stderr goes to `err`.
+int run_on_a_full_disk(const std::string& args, int limit_kib, const fs::path& err) {
+  return shell("bash -c 'trap \"\" XFSZ; ulimit -f " + std::to_string(limit_kib) + "; " + kBin +
+               args + "' >/dev/null 2>" + err.string());
+}
+
+const std::string kShortRun =
+    " compare --scene " + kScenes +
+    "thesis125.ini --simulation.duration_s 0.2 --strategies none,edge-min";
+
+TEST(OutputSafety, ReportThatCannotBeWrittenLeavesNoFolder) {
+  // 8 KiB: the contact sheet (tens of KB) is the first file that cannot be written.
+  const UniqueDir tmp("fragsim_full_report");
+  const fs::path report = tmp.path() / "reports" / "front";
+  EXPECT_EQ(run_on_a_full_disk(kShortRun + " --report " + report.string(), 8, tmp.path() / "err"),
+            1);
+  const std::string err = read_all(tmp.path() / "err");
+  EXPECT_NE(err.find(": write failed (disk full?)"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(fs::exists(tmp.path() / "reports"));  // both levels were made for it
+}
+
+TEST(OutputSafety, CsvFilesAppearAllOrNone) {
+  // 16 KiB: the five small files fit, trajectories.csv (125 pieces over 12 steps) does not.
+  const UniqueDir tmp("fragsim_full_csv");
+  const fs::path out = tmp.path() / "csv";
+  EXPECT_EQ(run_on_a_full_disk(kShortRun + " --trajectories --csv " + out.string(), 16,
+                               tmp.path() / "err"),
+            1);
+  const std::string err = read_all(tmp.path() / "err");
+  EXPECT_NE(err.find("trajectories.csv: write failed (disk full?)"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out)) << "summary.csv left: " << fs::exists(out / "summary.csv");
+  // The same run with room writes them all.
+  EXPECT_EQ(shell(kBin + kShortRun + " --trajectories --csv " + out.string() + " >/dev/null"), 0);
+  EXPECT_TRUE(fs::exists(out / "summary.csv"));
+  EXPECT_TRUE(fs::exists(out / "trajectories.csv"));
+}
+
+TEST(OutputSafety, BakeIntoAFolderIsRefusedBeforeAnyBakeIsWritten) {
+  // A folder where the second strategy's bake goes: the first bake must not appear alone.
+  const UniqueDir tmp("fragsim_bake_folder");
+  fs::create_directories(tmp.path() / "b.edge-min.glb");
+  const fs::path err = tmp.path() / "err";
+  EXPECT_EQ(shell(kBin + kShortRun + " --force --bake " + (tmp.path() / "b.glb").string() +
+                  " >/dev/null 2>" + err.string()),
+            2);
+  EXPECT_EQ(read_all(err), "fragsim compare: --bake " + (tmp.path() / "b.edge-min.glb").string() +
+                               ": is a folder\n");
+  EXPECT_FALSE(fs::exists(tmp.path() / "b.none.glb"));
+}
+
+TEST(OutputSafety, RenderThatFailsPartWayLeavesNoFrame) {
+  const UniqueDir tmp("fragsim_full_render");
+  const std::string render = " render --scene " + kScenes +
+                             "thesis125.ini --simulation.duration_s 0.2 --strategy none "
+                             "--steps 0:3 --out ";
+  // With room: the frames grow as the pieces spread, so a limit just above the first frame's size
+  // lets it be written and stops a later one.
+  ASSERT_EQ(shell(kBin + render + (tmp.path() / "room").string() + " >/dev/null"), 0);
+  const std::uintmax_t first = fs::file_size(tmp.path() / "room" / "frame_00000.png");
+  std::uintmax_t largest = 0;
+  for (const auto& e : fs::directory_iterator(tmp.path() / "room")) {
+    largest = std::max(largest, fs::file_size(e.path()));
+  }
+  const int limit_kib = static_cast<int>((first + 1023) / 1024);
+  ASSERT_GT(largest, static_cast<std::uintmax_t>(limit_kib) * 1024) << "frames too alike";
+  const fs::path out = tmp.path() / "frames";
+  EXPECT_EQ(run_on_a_full_disk(render + out.string(), limit_kib, tmp.path() / "err"), 1);
+  const std::string err = read_all(tmp.path() / "err");
+  EXPECT_NE(err.find(": write failed (disk full?)"), std::string::npos) << err;
+  EXPECT_FALSE(fs::exists(out / "frame_00000.png"));
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(Determinism, TwoProcessesWriteTheSameBytes) {

@@ -87,15 +87,30 @@ TEST(AtomicFile, MissingFolderIsRefusedNamingThePath) {
   EXPECT_EQ(entries(dir), 0);
 }
 
+TEST(AtomicFile, FolderInTheTargetsPlaceIsRefusedBeforeWriting) {
+  const fs::path dir = fresh_dir("fragsim_atomic_folder");
+  const fs::path target = dir / "taken";
+  fs::create_directories(target);
+  try {
+    AtomicFile f(target.string());
+    FAIL() << "opened the folder " << target << " as a file";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), target.string() + ": is a folder");
+  }
+  EXPECT_EQ(entries(dir), 1);  // no temporary file
+}
+
 TEST(AtomicFile, FailedRenameKeepsTheTargetAndLeavesNoTemporary) {
-  // A folder in the target's place: the text is written, but rename() cannot replace a folder
-  // with a file, so the commit fails after the writing.
+  // A folder put in the target's place after the file was opened: the text is written, but
+  // rename() cannot replace a folder with a file, so the commit fails after the writing.
   const fs::path dir = fresh_dir("fragsim_atomic_rename");
   const fs::path target = dir / "taken";
+  AtomicFile f(target.string());
+  f.out() << "new";
   fs::create_directories(target);
   write_file_atomically((target / "inside.txt").string(), "kept");
   try {
-    write_file_atomically(target.string(), "new");
+    f.commit();
     FAIL() << "replaced the folder " << target;
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()).rfind(target.string() + ": cannot rename into place (", 0), 0u)

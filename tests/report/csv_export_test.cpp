@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "experiments/evaluation.hpp"
+#include "io/output_folder.hpp"
+#include "io/output_set.hpp"
 #include "sim/scene_file.hpp"
 #include "support/shipped_scene.hpp"
 
@@ -26,8 +28,13 @@ TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
   const auto runs = compare(scene, {"none", "edge", "near-plane"});
   const std::string dir = ::testing::TempDir() + "/fragsim_csv_roundtrip";
   std::filesystem::remove_all(dir);
-  prepare_output_dir(dir, false);
-  write_comparison_csv(dir, scene, runs);
+  {
+    OutputFolder folder(dir, false);
+    OutputSet files;
+    add_comparison_csv(files, dir, scene, runs);
+    files.commit();
+    folder.keep();
+  }
   const auto back = read_summary_csv(dir + "/summary.csv");
   ASSERT_EQ(back.size(), runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -46,8 +53,8 @@ TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
   // config.ini is the resolved scene and loads back to the same scene.
   EXPECT_EQ(scene_to_ini(load_scene(dir + "/config.ini")), scene_to_ini(scene));
   // An existing, non-empty folder is refused without force.
-  EXPECT_THROW(prepare_output_dir(dir, false), std::runtime_error);
-  EXPECT_NO_THROW(prepare_output_dir(dir, true));
+  EXPECT_THROW(OutputFolder(dir, false), std::runtime_error);
+  EXPECT_NO_THROW(OutputFolder(dir, true));
 }
 
 TEST(Comparison, CsvIsByteIdenticalForTheSameSceneAndSeed) {
@@ -164,23 +171,6 @@ TEST(CsvExport, UnreadableSummaryFileIsNamedWithItsLine) {
   EXPECT_EQ(error_of(header + "a,b\n"), path + ":2: expected " + std::to_string(cells) + " cells");
   write_text(path, header);
   EXPECT_TRUE(read_summary_csv(path).empty());
-}
-
-TEST(CsvExport, OutputFolderIsMadeOrMustBeAnEmptyFolder) {
-  const std::filesystem::path base = std::filesystem::path(::testing::TempDir()) / "fragsim_out";
-  std::filesystem::remove_all(base);
-  const std::string nested = (base / "a" / "b").string();
-  prepare_output_dir(nested, false);  // made with its parents
-  EXPECT_TRUE(std::filesystem::is_directory(nested));
-  EXPECT_NO_THROW(prepare_output_dir(nested, false));  // empty: nothing to overwrite
-  const std::string file = (base / "file").string();
-  write_text(file, "x");
-  try {
-    prepare_output_dir(file, true);
-    FAIL() << "took the file " << file << " for a folder";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), file + ": exists and is not a folder");
-  }
 }
 
 }  // namespace
