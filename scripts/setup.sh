@@ -13,13 +13,14 @@ packages=(cmake g++ make pkg-config libode-dev libbullet-dev libeigen3-dev
           voro++-dev libqhull-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
           libsdl2-dev xvfb xdotool x11-apps python3)
 scripts/install_packages.sh "${packages[@]}"
-# node and npm for three.js, which configuring installs into the build folder for the report's 3D
-# view (CMakeLists.txt), and for the glTF validator (the Bake.ValidatorFindsNoError test): Debian's,
-# unless a node is already there (another distribution's nodejs package would conflict). Installed
-# before cmake runs, so the first configure finds npm.
+# node and npm for three.js, the report's 3D view, and for the glTF validator (the
+# Bake.ValidatorFindsNoError test): Debian's, unless a node is already there (another
+# distribution's nodejs package would conflict). three.js goes into build/npm before cmake runs,
+# so that configuring, which never reaches the network, finds it.
 if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
   scripts/install_packages.sh nodejs npm
 fi
+scripts/install_three.sh
 
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j"$(nproc)" "${target[@]}"

@@ -1,10 +1,9 @@
 #pragma once
-// three.js (npm package `three`, MIT licence) as the build found it: CMake installs the pinned
-// version into the build folder's npm prefix at configure time and embeds its single-file module
-// build and its LICENSE into the binary (cmake/embed_text.cmake), so a report written anywhere
-// carries the same bytes and opens offline. Nothing is read from disk at report time. A build
-// without it (npm missing or offline at configure, or FRAGSIM_THREE_JS=OFF) still writes reports,
-// without the 3D view.
+// three.js (npm package `three`, MIT licence) as the build found it: scripts/install_three.sh puts
+// the pinned version into build/npm, and the build embeds its single-file module build and its
+// LICENSE into the binary (cmake/embed_text.cmake), so a report written anywhere carries the same
+// bytes and opens offline. Nothing is read from disk at report time. A build without it (not
+// installed when configuring, or FRAGSIM_THREE_JS=OFF) still writes reports, without the 3D view.
 
 #include <string_view>
 

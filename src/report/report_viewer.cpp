@@ -217,9 +217,9 @@ void ViewerRecorder::end() {
 std::string viewer_missing_text(const BundledThreeJs& three) {
   return "No 3D view in this report: this fragsim was built without three.js (" +
          std::string(three.missing) +
-         "). To get it: node and npm installed (scripts/setup.sh does), FRAGSIM_THREE_JS on (the "
-         "default), then reconfigure (cmake --preset release installs the pinned npm package "
-         "three into the build folder) and rebuild.";
+         "). To get it: run scripts/install_three.sh (it installs node's npm package three at "
+         "the pinned version into build/npm; scripts/setup.sh runs it), keep FRAGSIM_THREE_JS on "
+         "(the default), then reconfigure and rebuild.";
 }
 
 std::string viewer_section_html(const Scene& scene, const ViewerRecorder& recorder,
