@@ -4,7 +4,8 @@
 Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
   ROOT     the repository's root
   FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
-  --only   run only these checks: readme, outside, links, keys, folders, includes
+  --only   run only these checks: readme, outside, links, keys, folders, includes, pages, issues,
+           changelog
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
@@ -16,10 +17,21 @@ Fails (exit 1, one line per finding) when:
   folders   a folder listed in docs/architecture.md ("## Folders") does not exist, or a folder
             under src/ is not listed;
   includes  a file under src/ includes a folder of its own layer or a higher one (the "## Layers"
-            table of docs/architecture.md), or ODE or SDL outside the folder that owns it.
+            table of docs/architecture.md), or ODE or SDL outside the folder that owns it;
+  pages     a page with a length limit (PAGE_MAX_LINES below: docs/benchmarks.md, 400 lines) is
+            over it: the pages hold the present, the history goes to the changelog;
+  issues    a tracked text file under README.md, docs/, src/, tests/, scripts/, bench/, examples/
+            or data/ names an issue or pull request by its number (the word followed by a number,
+            with or without a hash; a hash and a number in parentheses; "fixes", "closes", "see"
+            and the like before a hash and a number): a reader has no tracker;
+  changelog docs/CHANGELOG.md is not in the Keep a Changelog shape: "## [Unreleased]" first, then
+            releases "## [library X.Y.Z] - YYYY-MM-DD" or "## [tool X.Y.Z] - YYYY-MM-DD", newest
+            first, each with at least one subsection, and subsections "### " only among Added,
+            Changed, Deprecated, Removed, Fixed and Security, each at most once a section.
 Python standard library only.
 """
 
+import datetime
 import os
 import re
 import subprocess
@@ -30,6 +42,19 @@ DATE = re.compile(r"20[0-9]{2}-[01][0-9]-[0-3][0-9]")
 HEX_TOKEN = re.compile(r"(?<![0-9A-Za-z_])[0-9a-f]{7,40}(?![0-9A-Za-z_])")
 # Spelled in two parts so that this file does not match itself.
 OUTSIDE = ".." + "/shared"
+PAGE_MAX_LINES = {"docs/benchmarks.md": 400}
+# The word spelled in two parts, and no digit after a hash in the patterns' text, so that this
+# file does not match itself.
+ISSUE_WORD = "iss" + "ue"
+ISSUE_NUMBER = re.compile(
+    r"\b(?:" + ISSUE_WORD + r"s?|pull request|PR)(?:\s*#\s*|\s+)[0-9]+\b"
+    r"|\(#[0-9]+\)"
+    r"|\b(?:fix(?:e[sd])?|close[sd]?|resolve[sd]?|see|refs?)\s+#[0-9]+\b",
+    re.IGNORECASE)
+ISSUE_ROOTS = ("README.md", "docs/", "src/", "tests/", "scripts/", "bench/", "examples/", "data/")
+CHANGELOG_RELEASE = re.compile(
+    r"^## \[(?:(tool|library) )?([0-9]+)\.([0-9]+)\.([0-9]+)\] - ([0-9]{4}-[0-9]{2}-[0-9]{2})$")
+CHANGELOG_KINDS = ("Added", "Changed", "Deprecated", "Removed", "Fixed", "Security")
 
 failures = []
 
@@ -378,6 +403,96 @@ def check_includes(root):
                                      f"(layer {layer[to]}): only lower layers may be included")
 
 
+# --- pages ----------------------------------------------------------------------------------
+
+def check_pages(root):
+    for rel, limit in sorted(PAGE_MAX_LINES.items()):
+        path = os.path.join(root, rel)
+        if not os.path.exists(path):
+            fail("pages", f"{rel} does not exist")
+            continue
+        lines = read(path).split("\n")
+        if lines and lines[-1] == "":
+            lines.pop()
+        if len(lines) > limit:
+            fail("pages", f"{rel} has {len(lines)} lines, at most {limit} allowed (the present "
+                          "only: history goes to docs/CHANGELOG.md)")
+
+
+# --- issues ---------------------------------------------------------------------------------
+
+def check_issues(root):
+    for rel in tracked_files(root):
+        if not (rel == ISSUE_ROOTS[0] or rel.startswith(ISSUE_ROOTS[1:])):
+            continue
+        try:
+            with open(os.path.join(root, rel), "rb") as f:
+                data = f.read()
+        except OSError:
+            continue
+        if b"\0" in data[:8192]:
+            continue  # binary
+        for n, line in enumerate(data.decode("utf-8", "replace").split("\n"), 1):
+            for m in ISSUE_NUMBER.finditer(line):
+                fail("issues", f"{rel}:{n}: '{m.group(0)}': an issue number (a reader has no "
+                               "tracker: say what the change is)")
+
+
+# --- changelog ------------------------------------------------------------------------------
+
+def check_changelog(root):
+    rel = "docs/CHANGELOG.md"
+    path = os.path.join(root, rel)
+    if not os.path.exists(path):
+        fail("changelog", f"{rel} does not exist")
+        return
+    sections = []  # [heading line number, heading, subsection names]
+    for n, line in enumerate(without_code(read(path), inline=False), 1):
+        m = re.match(r"^(#{2,6}) (.*)$", line)
+        if not m:
+            continue
+        level, title = len(m.group(1)), m.group(2).strip()
+        if level == 2:
+            sections.append([n, title, []])
+        elif level > 3:
+            fail("changelog", f"{rel}:{n}: '{line}': no headings below '### ' (Added, Changed, ...)")
+        elif not sections:
+            fail("changelog", f"{rel}:{n}: '{line}' comes before the first '## ' section")
+        elif title not in CHANGELOG_KINDS:
+            fail("changelog", f"{rel}:{n}: '{line}': a subsection is one of "
+                              f"{', '.join(CHANGELOG_KINDS)}")
+        elif title in sections[-1][2]:
+            fail("changelog", f"{rel}:{n}: '{line}' twice in '{sections[-1][1]}'")
+        else:
+            sections[-1][2].append(title)
+    unreleased = bool(sections) and sections[0][1] == "[Unreleased]"
+    if not unreleased:
+        fail("changelog", f"{rel}: the first section must be '## [Unreleased]'")
+    last_date, last_version = None, {}
+    for n, title, kinds in sections[1:] if unreleased else sections:
+        m = CHANGELOG_RELEASE.match("## " + title)
+        if not m:
+            fail("changelog", f"{rel}:{n}: '## {title}': a release is '## [library X.Y.Z] - "
+                              "YYYY-MM-DD' or '## [tool X.Y.Z] - YYYY-MM-DD'")
+            continue
+        kind = m.group(1) or ""
+        version = tuple(int(m.group(i)) for i in (2, 3, 4))
+        try:
+            date = datetime.date.fromisoformat(m.group(5))
+        except ValueError:
+            fail("changelog", f"{rel}:{n}: '{m.group(5)}' is not a date")
+            continue
+        if last_date is not None and date > last_date:
+            fail("changelog", f"{rel}:{n}: {m.group(5)} is later than the release above it "
+                              "(newest first)")
+        if kind in last_version and version >= last_version[kind]:
+            fail("changelog", f"{rel}:{n}: {kind} {'.'.join(map(str, version))} is not older than "
+                              "the release of the same kind above it (newest first)")
+        if not kinds:
+            fail("changelog", f"{rel}:{n}: '## {title}' has no subsection (Added, Changed, ...)")
+        last_date, last_version[kind] = date, version
+
+
 def main(argv):
     args = [a for a in argv[1:] if not a.startswith("--only")]
     only = None
@@ -398,6 +513,9 @@ def main(argv):
         "keys": lambda: check_keys(root, fragsim),
         "folders": lambda: check_folders(root),
         "includes": lambda: check_includes(root),
+        "pages": lambda: check_pages(root),
+        "issues": lambda: check_issues(root),
+        "changelog": lambda: check_changelog(root),
     }
     for name in only or checks:
         if name not in checks:
