@@ -5,7 +5,7 @@ Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
   ROOT     the repository's root
   FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
   --only   run only these checks: readme, outside, links, keys, folders, includes, pages, issues,
-           changelog
+           changelog, offline
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
@@ -27,7 +27,11 @@ Fails (exit 1, one line per finding) when:
   changelog docs/CHANGELOG.md is not in the Keep a Changelog shape: "## [Unreleased]" first, then
             releases "## [library X.Y.Z] - YYYY-MM-DD" or "## [tool X.Y.Z] - YYYY-MM-DD", newest
             first, each with at least one subsection, and subsections "### " only among Added,
-            Changed, Deprecated, Removed, Fixed and Security, each at most once a section.
+            Changed, Deprecated, Removed, Fixed and Security, each at most once a section;
+  offline   a CMake file (CMakeLists.txt, cmake/*.cmake) could reach the network when configuring:
+            file(DOWNLOAD), FetchContent, ExternalProject, or execute_process running npm, npx,
+            pip, curl, wget or git. Configuring a fresh clone works offline; the set-up scripts
+            fetch what is needed.
 Python standard library only.
 """
 
@@ -493,6 +497,45 @@ def check_changelog(root):
         last_date, last_version[kind] = date, version
 
 
+# --- offline --------------------------------------------------------------------------------
+
+NETWORK_TOOLS = ("npm", "npx", "pip", "pip3", "curl", "wget", "git")
+
+
+def cmake_files(root):
+    out = []
+    for d, dirs, names in os.walk(root):
+        dirs[:] = [x for x in dirs if not x.startswith(".") and x not in ("build", "node_modules")]
+        for name in names:
+            if name == "CMakeLists.txt" or name.endswith(".cmake"):
+                out.append(os.path.join(d, name))
+    return sorted(out)
+
+
+def check_offline(root):
+    direct = re.compile(r"\b(file\s*\(\s*DOWNLOAD|FetchContent_\w+|ExternalProject_Add)\b", re.I)
+    for path in cmake_files(root):
+        rel = os.path.relpath(path, root)
+        text = read(path)
+        # Comments out, line numbers kept.
+        code = "\n".join(re.sub(r"#.*$", "", line) for line in text.split("\n"))
+        for m in direct.finditer(code):
+            n = code.count("\n", 0, m.start()) + 1
+            fail("offline", f"{rel}:{n}: {m.group(1)}: configuring must not reach the network")
+        for m in re.finditer(r"execute_process\s*\(", code):
+            depth, i = 1, m.end()
+            while i < len(code) and depth:
+                depth += {"(": 1, ")": -1}.get(code[i], 0)
+                i += 1
+            call = code[m.end():i]
+            for tool in NETWORK_TOOLS:
+                if re.search(r"(^|[\s/{}])" + tool + r"(\}|\s|$)", call, re.I) or \
+                        re.search(r"\$\{FRAGSIM_" + tool + r"\}", call, re.I):
+                    n = code.count("\n", 0, m.start()) + 1
+                    fail("offline", f"{rel}:{n}: execute_process runs {tool} when configuring "
+                                    "(put it in a set-up script)")
+
+
 def main(argv):
     args = [a for a in argv[1:] if not a.startswith("--only")]
     only = None
@@ -516,6 +559,7 @@ def main(argv):
         "pages": lambda: check_pages(root),
         "issues": lambda: check_issues(root),
         "changelog": lambda: check_changelog(root),
+        "offline": lambda: check_offline(root),
     }
     for name in only or checks:
         if name not in checks:
