@@ -14,4 +14,4 @@ ctest --preset release -j"$jobs"
 scripts/slurm/test.sh build/release/fragsim # a 4-task Slurm job array and its merge, ~10 s
 scripts/setup.sh asan
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j"$jobs"
-scripts/fuzz.sh 120 # the five targets side by side, 2 minutes in all
+scripts/fuzz.sh 120 # the six targets side by side, 2 minutes in all

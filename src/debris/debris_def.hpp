@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "debris/mesh_frame.hpp"
 #include "debris/piece.hpp"
+#include "geometry/axis_convention.hpp"
 
 namespace fragsim {
 
@@ -34,7 +34,7 @@ struct DebrisDef {
   // Not empty: the pieces are this file's meshes (.obj, .gltf, .glb) and pattern, size_m, splits,
   // gap, pieces and cluster do not apply; the file's origin is the object's centre.
   std::string mesh_file;
-  MeshFrame mesh_frame;  // the file's units and axes
+  AxisConvention mesh_frame;  // the file's units and axes
   double density_kgpm3 = 600.0;
   std::uint64_t seed = 1;  // voronoi: the seed points'
 };

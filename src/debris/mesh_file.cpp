@@ -225,7 +225,7 @@ void body_polyhedron(const ConvexShape* shape, const Eigen::Vector3d& half_exten
 }
 
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
-                               const MeshFrame& frame, std::vector<std::string>* warnings) {
+                               const AxisConvention& frame, std::vector<std::string>* warnings) {
   const std::string ext = extension_of(path);
   if (ext != ".obj" && ext != ".gltf" && ext != ".glb") {
     throw InputError(path + ": unknown mesh format '" + ext + "' (expected .obj, .gltf or .glb)");
@@ -234,7 +234,7 @@ std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
 }
 
 std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
-                                double density_kgpm3, const MeshFrame& frame,
+                                double density_kgpm3, const AxisConvention& frame,
                                 std::vector<std::string>* warnings) {
   const std::string ext = extension_of(path);
   std::vector<RawPiece> raw;
@@ -251,7 +251,7 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
   }
   if (!frame.is_identity()) {
     for (RawPiece& r : raw) {
-      for (Eigen::Vector3d& v : r.points_m) v = to_fragsim_frame(frame, v);
+      for (Eigen::Vector3d& v : r.points_m) v = position_to_fragsim(frame, v);
     }
   }
   std::vector<Piece> out;

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "debris/mesh_frame.hpp"
 #include "debris/piece.hpp"
+#include "geometry/axis_convention.hpp"
 
 namespace fragsim {
 
@@ -30,13 +30,13 @@ inline constexpr double kLargeObject_m = 100.0;
 // worth saying that is no error, each starting with the path: hulls simplified (how many, the
 // largest volume change), an object over kLargeObject_m across at unit_m = 1.
 std::vector<Piece> read_pieces(const std::string& path, double density_kgpm3,
-                               const MeshFrame& frame = {},
+                               const AxisConvention& frame = {},
                                std::vector<std::string>* warnings = nullptr);
 
 // The same from a file's bytes already in memory: `path` gives the format (its extension), the
 // name in messages and the folder a .gltf's external buffers are looked up in.
 std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& path,
-                                double density_kgpm3, const MeshFrame& frame = {},
+                                double density_kgpm3, const AxisConvention& frame = {},
                                 std::vector<std::string>* warnings = nullptr);
 
 // A piece's vertices about its centre of mass in its body axes, and its faces, each a loop

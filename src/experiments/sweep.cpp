@@ -13,16 +13,10 @@
 #include "experiments/process_runner.hpp"
 #include "experiments/shard.hpp"
 #include "io/number_format.hpp"
+#include "io/trim.hpp"
 
 namespace fragsim {
 namespace {
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t");
-  return s.substr(b, e - b + 1);
-}
 
 // Splits on `sep`, keeping empty items so "1,,2" can be reported rather than silently read.
 std::vector<std::string> split_keep_empty(const std::string& text, char sep) {

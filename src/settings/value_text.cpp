@@ -8,13 +8,6 @@
 
 namespace fragsim::settings {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
 double parse_double(const std::string& text) {
   const std::string s = trim(text);
   double v = 0.0;

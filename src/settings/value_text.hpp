@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "io/trim.hpp"
+
 namespace fragsim::settings {
 
 // A text that breaks a key's rule: what was expected, without the place or the key.
 struct ValueError {
   std::string rule;
 };
-
-std::string trim(const std::string& s);
 
 double parse_double(const std::string& text);  // finite
 // A number as parse_double reads it, or +infinity spelled as strtod accepts it: "inf" or

@@ -11,6 +11,7 @@
 
 #include "io/input_file.hpp"
 #include "io/number_format.hpp"
+#include "io/trim.hpp"
 #include "io/visible_text.hpp"
 
 namespace fragsim {
@@ -22,13 +23,6 @@ constexpr std::array<const char*, 10> kColumns{"t_s",       "eye_x_m",   "eye_y_
 // A basis this far from orthonormal is a broken file, not rounding (camera.csv's shortest
 // round-trip numbers are exact to the last bit).
 constexpr double kBasisTolerance = 1e-6;
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
 
 // One line's cells as RFC 4180 reads them: a cell in double quotes (spreadsheets and pandas
 // quote every cell) may hold commas, and "" in it stands for one quote. Spaces around a cell are

@@ -77,12 +77,12 @@ struct ObjectDef {
   int pieces = 1000;
   double cluster = 0.0;
   std::string mesh_file;
-  // The units and axes of mesh_file's coordinates (debris/mesh_frame.hpp): metres per file unit,
-  // the up axis and the handedness; the defaults are fragsim's own frame and glTF's.
+  // The units and axes of mesh_file's coordinates (geometry/axis_convention.hpp): metres per file
+  // unit, the up axis and the handedness; the defaults are fragsim's own frame and glTF's.
   double mesh_unit_m = 1.0;
-  MeshUp mesh_up = MeshUp::kY;
-  MeshHandedness mesh_handedness = MeshHandedness::kRight;
-  MeshFrame mesh_frame() const { return {mesh_unit_m, mesh_up, mesh_handedness}; }
+  UpAxis mesh_up = UpAxis::kY;
+  Handedness mesh_handedness = Handedness::kRight;
+  AxisConvention mesh_frame() const { return {mesh_unit_m, mesh_up, mesh_handedness}; }
   // The pieces read from mesh_file when the scene is loaded, so a bad file fails before anything
   // runs. Not a scene key.
   std::shared_ptr<const std::vector<Piece>> mesh_pieces;

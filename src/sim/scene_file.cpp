@@ -26,7 +26,6 @@ using settings::closed;
 using settings::format_vec3;
 using settings::open;
 using settings::open_closed;
-using settings::trim;
 using settings::ValueError;
 using KeySpec = settings::Key<Scene>;
 namespace {
@@ -148,11 +147,11 @@ std::vector<KeySpec> keys_before_strategies() {
               &D::mesh_unit_m, open_closed(0, 1000)),
          choice("mesh_up",
                 "mesh_file's up axis (Unreal: z; glTF, Unity, Blender's exporters by default: y)",
-                &D::mesh_up, {{"y", MeshUp::kY}, {"z", MeshUp::kZ}}),
+                &D::mesh_up, {{"y", UpAxis::kY}, {"z", UpAxis::kZ}}),
          choice("mesh_handedness",
                 "mesh_file's handedness (Unreal, Unity: left; glTF, Blender: right)",
                 &D::mesh_handedness,
-                {{"right", MeshHandedness::kRight}, {"left", MeshHandedness::kLeft}})});
+                {{"right", Handedness::kRight}, {"left", Handedness::kLeft}})});
   }
   {
     using D = ExplosionDef;

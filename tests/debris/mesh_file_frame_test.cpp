@@ -89,7 +89,7 @@ TEST_F(MeshFileFrame, ZUpCentimetresReadAsYUpMetresToTheBit) {
         return Eigen::Vector3d(100 * v.x(), -100 * v.z(), 100 * v.y());
       },
       1.0);
-  expect_same_bits(metres, read_pieces(cm, 600, {0.01, MeshUp::kZ, MeshHandedness::kRight}));
+  expect_same_bits(metres, read_pieces(cm, 600, {0.01, UpAxis::kZ, Handedness::kRight}));
   // Unreal-style: centimetres, Z up, left-handed (fragsim's z is its y).
   const std::string unreal = write(
       "ue.obj",
@@ -97,7 +97,7 @@ TEST_F(MeshFileFrame, ZUpCentimetresReadAsYUpMetresToTheBit) {
         return Eigen::Vector3d(100 * v.x(), 100 * v.z(), 100 * v.y());
       },
       1.0);
-  expect_same_bits(metres, read_pieces(unreal, 600, {0.01, MeshUp::kZ, MeshHandedness::kLeft}));
+  expect_same_bits(metres, read_pieces(unreal, 600, {0.01, UpAxis::kZ, Handedness::kLeft}));
   // At 1/64 m the two files agree to tinyobjloader's rounding of decimals.
   const auto fine = read_pieces(write("f.obj", [](const Eigen::Vector3d& v) { return v; }), 600);
   const auto fine_cm =
@@ -105,7 +105,7 @@ TEST_F(MeshFileFrame, ZUpCentimetresReadAsYUpMetresToTheBit) {
                         [](const Eigen::Vector3d& v) {
                           return Eigen::Vector3d(100 * v.x(), -100 * v.z(), 100 * v.y());
                         }),
-                  600, {0.01, MeshUp::kZ, MeshHandedness::kRight});
+                  600, {0.01, UpAxis::kZ, Handedness::kRight});
   ASSERT_EQ(fine.size(), fine_cm.size());
   for (std::size_t i = 0; i < fine.size(); ++i) {
     EXPECT_NEAR(fine_cm[i].mass_kg / fine[i].mass_kg, 1.0, 1e-9);
@@ -118,7 +118,7 @@ TEST_F(MeshFileFrame, ZUpCentimetresReadAsYUpMetresToTheBit) {
 TEST_F(MeshFileFrame, ALeftHandedFileIsTheMirroredObjectWithOutwardFaces) {
   const std::string path = write("left.obj", [](const Eigen::Vector3d& v) { return v; });
   const auto right = read_pieces(path, 600);
-  const auto left = read_pieces(path, 600, {1.0, MeshUp::kY, MeshHandedness::kLeft});
+  const auto left = read_pieces(path, 600, {1.0, UpAxis::kY, Handedness::kLeft});
   ASSERT_EQ(left.size(), right.size());
   const Eigen::Vector3d mirror(1, 1, -1);
   for (std::size_t i = 0; i < left.size(); ++i) {

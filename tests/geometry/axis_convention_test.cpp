@@ -27,6 +27,19 @@ TEST(AxisConvention, TheFourFrames) {
   EXPECT_EQ(map(UpAxis::kZ, Handedness::kLeft, {0, 0, 1}), Eigen::Vector3d(0, 1, 0));
 }
 
+TEST(AxisConvention, EachEnginesPointLandsTheSame) {
+  // 1 m right, 2 m up, 3 m toward the viewer in fragsim's frame, as each tool writes it.
+  const Eigen::Vector3d want(1, 2, 3);
+  EXPECT_EQ(position_to_fragsim(AxisConvention{}, want), want);  // fragsim and glTF: as is
+  // Unity: metres, Y up, left-handed, z away from the viewer.
+  EXPECT_EQ(position_to_fragsim({1.0, UpAxis::kY, Handedness::kLeft}, {1, 2, -3}), want);
+  // Blender: metres, Z up, right-handed, y away from the viewer (its glTF exporter's turn).
+  EXPECT_EQ(position_to_fragsim({1.0, UpAxis::kZ, Handedness::kRight}, {1, -3, 2}), want);
+  // Unreal: centimetres, Z up, left-handed: x forward, y right, z up. fragsim's x stays x and
+  // its z (x cross y) is then Unreal's y.
+  EXPECT_EQ(position_to_fragsim({0.01, UpAxis::kZ, Handedness::kLeft}, {100, 300, 200}), want);
+}
+
 TEST(AxisConvention, LeftHandedFramesAreMirrored) {
   // x cross y is z in a right-handed file; a left-handed file's x cross y maps to -z's image.
   for (const UpAxis up : {UpAxis::kY, UpAxis::kZ}) {
