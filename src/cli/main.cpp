@@ -52,7 +52,6 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   remove_temporaries_on_interrupt();
-  arm_test_signal_from_environment();
   const std::vector<std::string> args(argv + 2, argv + argc);
   try {
     if (command == "run") return cli::cmd_run(args);

@@ -1,11 +1,6 @@
 #include "sim/run.hpp"
 
-#include <signal.h>
-#include <unistd.h>
-
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -20,38 +15,7 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// The test-only signal (arm_test_signal_from_environment); plain data, copied into workers by fork.
-struct TestSignal {
-  int signo = 0;  // 0: not armed
-  long at_step = 0;
-  long steps = 0;
-  pid_t target = 0;  // 0: the process that counts the step
-};
-TestSignal g_test_signal;
-
-void count_test_step() {
-  if (g_test_signal.signo != 0 && ++g_test_signal.steps == g_test_signal.at_step) {
-    ::kill(g_test_signal.target != 0 ? g_test_signal.target : ::getpid(), g_test_signal.signo);
-  }
-}
-
 }  // namespace
-
-void arm_test_signal_from_environment() {
-  const char* step = std::getenv("FRAGSIM_TEST_RAISE_AT_STEP");
-  const char* name = std::getenv("FRAGSIM_TEST_RAISE_SIGNAL");
-  if (!step || !name) return;
-  const long at = std::strtol(step, nullptr, 10);
-  int signo = 0;
-  for (const auto& [n, s] : {std::pair{"INT", SIGINT}, std::pair{"TERM", SIGTERM},
-                             std::pair{"HUP", SIGHUP}, std::pair{"KILL", SIGKILL}}) {
-    if (std::strcmp(name, n) == 0) signo = s;
-  }
-  if (at < 1 || signo == 0) return;
-  const char* in = std::getenv("FRAGSIM_TEST_RAISE_IN");
-  const bool self = in && std::strcmp(in, "self") == 0;
-  g_test_signal = {signo, at, 0, self ? 0 : ::getpid()};
-}
 
 Run::Run(const Scene& scene, SceneStrategy& strategy, std::span<RunObserver* const> observers)
     : Run(scene, strategy, make_camera_motion(scene), nullptr, observers) {}
@@ -170,7 +134,6 @@ void Run::step() {
   snap_.physics_s = physics_s;
   snap_.strategy_s = strategy_s;
   for (RunObserver* o : observers_) o->observe(snap_);
-  count_test_step();
 }
 
 RunTotals Run::totals() const {

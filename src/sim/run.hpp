@@ -91,13 +91,4 @@ class Run {
   bool finished_ = false;
 };
 
-// Test-only (tests/cli/output_safety_test.cpp), so that a signal lands at a known point of a run
-// instead of after a guessed time. Reads FRAGSIM_TEST_RAISE_AT_STEP=N and
-// FRAGSIM_TEST_RAISE_SIGNAL=INT|TERM|HUP|KILL once; then the N-th step this process simulates,
-// counted over all its runs (a forked worker goes on from its parent's count), sends the signal to
-// the process that called this (a worker's signal reaches its parent, as a user's would), or with
-// FRAGSIM_TEST_RAISE_IN=self to the process that counted it (a worker that crashes). Without
-// both variables it does nothing. Only fragsim's main calls it.
-void arm_test_signal_from_environment();
-
 }  // namespace fragsim

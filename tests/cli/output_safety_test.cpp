@@ -1,6 +1,6 @@
 // Output files appear whole or not at all, and the same scene and seed give the same bytes in
 // another process: the fragsim executable, interrupted and rerun. Signals land at a known step
-// (FRAGSIM_TEST_RAISE_AT_STEP, sim/simulation.hpp), never after a guessed time.
+// (FRAGSIM_TEST_RAISE_AT_STEP, support/signal_at_step.cpp), never after a guessed time.
 
 #include <gtest/gtest.h>
 #include <signal.h>

@@ -271,7 +271,7 @@ TEST(ShardCommand, BadShardIsOneLineNamingTheOption) {
 
 TEST(ShardCommand, AFailingJobIsNamedByItsNumberInTheWholePlan) {
   // 5 jobs of 60 steps; slice 1/2 holds jobs 3, 4 and 5. On 2 workers, worker 0 runs jobs 3 and
-  // 5, so its step 100 (sim/simulation.hpp's test signal) falls in job 5, where it kills itself.
+  // 5, so its step 100 (support/signal_at_step.cpp) falls in job 5, where it kills itself.
   const test::UniqueDir dir("fragsim_shard_crash");
   for (const auto& [name, value] :
        {std::pair<const char*, const char*>{"FRAGSIM_TEST_RAISE_AT_STEP", "100"},

@@ -1,5 +1,7 @@
 #pragma once
-// Runs the fragsim executable (the FRAGSIM_BINARY this build made) for end-to-end tests.
+// Runs the fragsim executable (the FRAGSIM_BINARY this build made) for end-to-end tests. A test
+// that sets FRAGSIM_TEST_RAISE_AT_STEP, to stop a run at a known step, gets the same tool built
+// with the step counter (FRAGSIM_SIGNAL_BINARY, support/signal_at_step.cpp) instead.
 
 #include <stdlib.h>
 #include <sys/wait.h>
@@ -21,7 +23,9 @@ struct Result {
 };
 
 inline Result run_fragsim(const std::string& args) {
-  const std::string cmd = std::string(FRAGSIM_BINARY) + " " + args + " 2>&1";
+  const char* binary =
+      ::getenv("FRAGSIM_TEST_RAISE_AT_STEP") ? FRAGSIM_SIGNAL_BINARY : FRAGSIM_BINARY;
+  const std::string cmd = std::string(binary) + " " + args + " 2>&1";
   Result r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -36,8 +40,12 @@ inline Result run_fragsim(const std::string& args) {
 // status, so a death by a signal is told apart from an exit (WIFSIGNALED, WTERMSIG).
 inline int run_fragsim_status(const std::string& args,
                               const std::vector<std::pair<std::string, std::string>>& env = {}) {
+  const char* binary = FRAGSIM_BINARY;
+  for (const auto& [name, value] : env) {
+    if (name == "FRAGSIM_TEST_RAISE_AT_STEP") binary = FRAGSIM_SIGNAL_BINARY;
+  }
   // exec: the shell becomes fragsim, so the status is fragsim's own, not the shell's report of it.
-  const std::string cmd = "exec " + std::string(FRAGSIM_BINARY) + " " + args + " >/dev/null 2>&1";
+  const std::string cmd = "exec " + std::string(binary) + " " + args + " >/dev/null 2>&1";
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) return -1;
