@@ -16,7 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Fracture : public ::testing::Test {
+class FractureCommand : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("fragsim_fracture_" + std::to_string(::getpid()));
@@ -30,7 +30,7 @@ class Fracture : public ::testing::Test {
   std::string scene_;
 };
 
-TEST_F(Fracture, WrittenPiecesReadBackAsTheScenesPieces) {
+TEST_F(FractureCommand, WrittenPiecesReadBackAsTheScenesPieces) {
   for (const char* name : {"pieces.obj", "pieces.glb"}) {
     const std::string out = (dir_ / name).string();
     const test::Result r = test::run_fragsim("fracture --scene " + scene_ + " --out " + out);
@@ -49,7 +49,7 @@ TEST_F(Fracture, WrittenPiecesReadBackAsTheScenesPieces) {
   }
 }
 
-TEST_F(Fracture, BadOutIsOneLineNamingTheOption) {
+TEST_F(FractureCommand, BadOutIsOneLineNamingTheOption) {
   for (const std::string& args : {std::string(), " --out " + (dir_ / "p.stl").string(),
                                   " --out " + (dir_ / "no" / "p.glb").string()}) {
     const test::Result r = test::run_fragsim("fracture --scene " + scene_ + args);

@@ -1,6 +1,6 @@
-// Output files appear whole or not at all, and the same scene and seed give the same bytes in
-// another process: the fragsim executable, interrupted and rerun. Signals land at a known step
-// (FRAGSIM_TEST_RAISE_AT_STEP, support/signal_at_step.cpp), never after a guessed time.
+// Output files appear whole or not at all: the fragsim executable, interrupted and rerun. Signals
+// land at a known step (FRAGSIM_TEST_RAISE_AT_STEP, support/signal_at_step.cpp), never after a
+// guessed time. That another process writes the same bytes is in tests/experiments/determinism_test.cpp.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -219,23 +219,6 @@ TEST(OutputSafety, RenderThatFailsPartWayLeavesNoFrame) {
   EXPECT_NE(err.find(": write failed (disk full?)"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out / "frame_00000.png"));
   EXPECT_FALSE(fs::exists(out));
-}
-
-TEST(Determinism, TwoProcessesWriteTheSameBytes) {
-  const UniqueDir tmp("fragsim_det");
-  const fs::path a = tmp.path() / "a";
-  const fs::path b = tmp.path() / "b";
-  for (const fs::path& d : {a, b}) {
-    ASSERT_EQ(shell(kBin + " compare --scene " + kScenes + "thesis125.ini --trajectories --csv " +
-                    d.string() + " >/dev/null"),
-              0);
-  }
-  for (const char* f :
-       {"summary.csv", "steps.csv", "camera.csv", "trajectories.csv", "config.ini"}) {
-    const std::string bytes = read_all(a / f);
-    EXPECT_FALSE(bytes.empty()) << f;
-    EXPECT_EQ(bytes, read_all(b / f)) << f;
-  }
 }
 
 }  // namespace

@@ -108,7 +108,7 @@ TEST(RenderCommand, BadOptionsAreOneLineUsageErrors) {
   EXPECT_FALSE(fs::exists(dir));                     // refused before anything was created
 }
 
-TEST(CompareSheet, WritesOneRowPerStrategyAndChecksItsOptions) {
+TEST(RenderCommand, WritesOneRowPerStrategyAndChecksItsOptions) {
   const fs::path dir = fresh_dir("fragsim_sheet");
   fs::create_directories(dir);
   const fs::path sheet = dir / "sheet.png";

@@ -4,8 +4,8 @@
 Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
   ROOT     the repository's root
   FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
-  --only   run only these checks: readme, outside, links, keys, folders, includes, pages, issues,
-           changelog, offline
+  --only   run only these checks: readme, outside, links, keys, folders, includes, mirror,
+           pages, issues, changelog, offline, hooks
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
@@ -18,6 +18,13 @@ Fails (exit 1, one line per finding) when:
             under src/ is not listed;
   includes  a file under src/ includes a folder of its own layer or a higher one (the "## Layers"
             table of docs/architecture.md), or ODE or SDL outside the folder that owns it;
+  mirror    a source src/D/X.cpp has no test named after it, tests/D/X_test.cpp or
+            tests/D/X_<aspect>_test.cpp (src/control/D/ is tested in tests/D/, its api/ in
+            tests/control/ or, as C programs, tests/control/api/), unless MIRROR_UNTESTED lists it
+            with a reason; or a GoogleTest suite (the first argument of TEST, TEST_F, TEST_P) is
+            named neither after its file (world_skip_test.cpp: WorldSkip) nor after the source the
+            file tests (World), unless MIRROR_SUITES lists the file with a reason; or an entry of
+            either list is no longer needed. Prints how many sources have such a test;
   pages     a page with a length limit (PAGE_MAX_LINES below: docs/benchmarks.md, 400 lines) is
             over it: the pages hold the present, the history goes to the changelog;
   issues    a tracked text file under README.md, docs/, src/, tests/, scripts/, bench/, examples/
@@ -31,7 +38,10 @@ Fails (exit 1, one line per finding) when:
   offline   a CMake file (CMakeLists.txt, cmake/*.cmake) could reach the network when configuring:
             file(DOWNLOAD), FetchContent, ExternalProject, or execute_process running npm, npx,
             pip, curl, wget or git. Configuring a fresh clone works offline; the set-up scripts
-            fetch what is needed.
+            fetch what is needed;
+  hooks     a file under src/ holds a test hook: reads an environment variable named FRAGSIM_TEST_*
+            or declares a name starting g_test_. The shipped tool carries no test code; tests
+            build their own variant (tests/support/signal_at_step.cpp).
 Python standard library only.
 """
 
@@ -534,6 +544,155 @@ def check_offline(root):
                     n = code.count("\n", 0, m.start()) + 1
                     fail("offline", f"{rel}:{n}: execute_process runs {tool} when configuring "
                                     "(put it in a set-up script)")
+# --- mirror ---------------------------------------------------------------------------------
+
+# Sources without a test named after them, each with the reason and where it is tested instead.
+MIRROR_UNTESTED = {
+    # One call, results_text(results_table(...)).
+    "src/cli/report_table.cpp": "tested as the results table (tests/report/results_table_test.cpp) "
+                                "and as `run`'s printed row (tests/cli/main_test.cpp)",
+    # Two one-line forwards.
+    "src/cli/table.cpp": "forwards to report/text_table.cpp and io/number_format.cpp, tested in "
+                         "their own tests",
+    "src/control/strategies/occlusion_bound.cpp": "edge-min's cover_max, tested through edge-min "
+                                                  "(tests/strategies/edge_min_visibility_test.cpp, "
+                                                  "edge_min_parallel_test.cpp)",
+    "src/experiments/control_dump.cpp": "its files are what the differential replay reads: ctest "
+                                        "Control.Dump.* writes them, Control.Replay.* "
+                                        "(tests/control/replay.c) must match them bit for bit",
+    "src/report/bundled_three_js.cpp": "what the build embedded (FRAGSIM_THREE_JS); tested through "
+                                       "the report that carries it (report_viewer_test.cpp, "
+                                       "html_report_test.cpp) and in Chromium (Browser.ReportLoads)",
+    # Key tables of the library's strategies: one prober checks all three against the library.
+    "src/strategies/deflect_all_keys.cpp": "checked against the library's ranges by "
+                                           "tests/strategies/range_keys_test.cpp",
+    "src/strategies/edge_keys.cpp": "checked against the library's ranges by "
+                                    "tests/strategies/range_keys_test.cpp",
+    "src/strategies/edge_min_keys.cpp": "checked against the library's ranges by "
+                                        "tests/strategies/range_keys_test.cpp",
+    "src/window/sdl_window.cpp": "needs a display: Play.WindowFlightReplays flies it under Xvfb "
+                                 "(tests/play/play_window_test.sh)",
+}
+
+# Test files whose suites are not named after them, each with the reason.
+MIRROR_SUITES = {
+    "tests/control/controller_test.cpp": "suite ControlApi: renamed with the split of the "
+                                         "controller's step, which moves these tests",
+    "tests/strategies/cheap_rejection_test.cpp": "a suite per shape (BallRejection, BoxRejection, "
+                                                 "TwoBoxRejection): renamed with the split of "
+                                                 "cheap_rejection.cpp, which moves these tests",
+    "tests/sim/world_convex_test.cpp": "WorldConvexPairs, ConvexShapes: renamed with the split of "
+                                       "world.cpp's contact manifold",
+    "tests/sim/world_skip_test.cpp": "AutoDisable, CullResting, SkipKeys: renamed with the split "
+                                     "of world.cpp's contact manifold",
+    "tests/sim/world_wall_test.cpp": "WallWorld: renamed with the split of world.cpp's contact "
+                                     "manifold",
+    "tests/strategies/edge_min_horizon_budget_test.cpp": "EdgeMinHorizon, EdgeMinBudget: renamed "
+                                                         "with the split of edge-min's step",
+    "tests/strategies/edge_min_strategy_any_turn_test.cpp": "EdgeMinAnyTurn: renamed with the "
+                                                            "split of edge-min's step",
+    "tests/strategies/edge_min_visibility_test.cpp": "EdgeWeights, EdgeMinVisibilityKeys, "
+                                                     "CoverMax: renamed with the split of "
+                                                     "edge-min's step",
+    "tests/stress/stress_test.cpp": "its own program (ctest Stress.shard0/1): StressMatrix, "
+                                    "LongRun and WallIsland are the parts of its matrix, each "
+                                    "with its own fixture",
+}
+
+SUITE = re.compile(r"^\s*(?:TEST|TEST_F|TEST_P|TYPED_TEST|TYPED_TEST_P)\(\s*([A-Za-z0-9_]+)\s*,",
+                   re.M)
+
+
+def camel(snake):
+    return "".join(part[:1].upper() + part[1:] for part in snake.split("_"))
+
+
+def mirror_test_dirs(source_dir):
+    """The folders under tests/ where the sources of source_dir (a path under src/) are tested."""
+    parts = source_dir.split("/")[1:]
+    if parts[:2] == ["control", "api"]:
+        return ["tests/control", "tests/control/api"]
+    if parts[:1] == ["control"]:
+        parts = parts[1:]  # the library's strategies/ and geometry/ beside the tool's
+    return ["/".join(["tests"] + parts)]
+
+
+def check_mirror(root):
+    def files(top, ext):
+        out = []
+        for d, dirs, names in os.walk(os.path.join(root, top)):
+            dirs[:] = [x for x in dirs if not x.startswith(".")]
+            out += [os.path.relpath(os.path.join(d, n), root).replace(os.sep, "/")
+                    for n in names if n.endswith(ext)]
+        return sorted(out)
+
+    sources = [s for s in files("src", ".cpp") if not s.startswith("src/web/")]
+    tests = [t for t in files("tests", "_test.cpp") + files("tests", "_test.c")]
+    # Each test file tests the source whose name is the longest that starts its own, in the folder
+    # that source is tested in: evaluation_codec_test.cpp is evaluation_codec.cpp's, not
+    # evaluation.cpp's.
+    names_in = {}
+    for s in sources:
+        for d in mirror_test_dirs(os.path.dirname(s)):
+            names_in.setdefault(d, []).append((os.path.basename(s)[:-len(".cpp")], s))
+    tested_by = {}
+    for t in tests:
+        d, name = os.path.split(t)
+        stem = name[:name.rindex("_test.")]
+        best = None
+        for x, s in names_in.get(d, []):
+            if (stem == x or stem.startswith(x + "_")) and (best is None or len(x) > len(best[0])):
+                best = (x, s)
+        tested_by[t] = best
+    mirrored = {b[1] for b in tested_by.values() if b}
+
+    for s in sources:
+        if s in mirrored:
+            if s in MIRROR_UNTESTED:
+                fail("mirror", f"{s} has a test named after it now: take it out of MIRROR_UNTESTED")
+        elif s not in MIRROR_UNTESTED:
+            where = " or ".join(f"{d}/{os.path.basename(s)[:-4]}_test.cpp"
+                                for d in mirror_test_dirs(os.path.dirname(s)))
+            fail("mirror", f"{s} has no test named after it ({where}, or _<aspect>_test.cpp)")
+    for s in sorted(set(MIRROR_UNTESTED) - set(sources)):
+        fail("mirror", f"MIRROR_UNTESTED lists {s}, which is not a source")
+
+    for t in tests:
+        stem = os.path.basename(t)[:os.path.basename(t).rindex("_test.")]
+        allowed = {camel(stem)}
+        if tested_by[t]:
+            allowed.add(camel(tested_by[t][0]))
+        suites = sorted(set(SUITE.findall(read(os.path.join(root, t)))))
+        wrong = [x for x in suites if x not in allowed]
+        if wrong and t not in MIRROR_SUITES:
+            fail("mirror", f"{t}: suite {', '.join(wrong)} is not named after the file "
+                           f"({' or '.join(sorted(allowed))})")
+        elif not wrong and t in MIRROR_SUITES:
+            fail("mirror", f"{t}: its suites are named after it now: take it out of MIRROR_SUITES")
+    for t in sorted(set(MIRROR_SUITES) - set(tests)):
+        fail("mirror", f"MIRROR_SUITES lists {t}, which is not a test file")
+
+    print(f"mirror: {len(mirrored)} of {len(sources)} sources under src/ have a test named after "
+          f"them; {len(MIRROR_UNTESTED)} are tested under other names (MIRROR_UNTESTED)")
+
+
+# --- hooks ----------------------------------------------------------------------------------
+
+def check_hooks(root):
+    # Spelled in parts so that this file's own text does not match.
+    hook = re.compile(r"\b(" + "FRAGSIM_" + "TEST_" + r"\w*|" + "g_" + "test_" + r"\w*)")
+    for d, dirs, names in os.walk(os.path.join(root, "src")):
+        dirs[:] = [x for x in dirs if not x.startswith(".")]
+        for name in sorted(names):
+            if not name.endswith((".cpp", ".hpp", ".h", ".c", ".mjs", ".js")):
+                continue
+            path = os.path.join(d, name)
+            rel = os.path.relpath(path, root)
+            for n, line in enumerate(read(path).split("\n"), 1):
+                m = hook.search(line)
+                if m:
+                    fail("hooks", f"{rel}:{n}: '{m.group(1)}': a test hook in the shipped code "
+                                  "(test through an observer or a test-only build)")
 
 
 def main(argv):
@@ -560,6 +719,8 @@ def main(argv):
         "issues": lambda: check_issues(root),
         "changelog": lambda: check_changelog(root),
         "offline": lambda: check_offline(root),
+        "hooks": lambda: check_hooks(root),
+        "mirror": lambda: check_mirror(root),
     }
     for name in only or checks:
         if name not in checks:

@@ -19,7 +19,7 @@ namespace {
 
 using test::scene_named;
 
-TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
+TEST(Evaluation, NoneAgainstItselfDeviatesExactlyZero) {
   const Scene scene = scene_named("thesis125");
   TrajectoryRecord ref;
   EvaluationOptions rec_opts;
@@ -32,7 +32,7 @@ TEST(Comparison, NoneAgainstItselfDeviatesExactlyZero) {
   EXPECT_EQ(s.deviation.deviated_share, 0.0);
 }
 
-TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
+TEST(Evaluation, ZeroGainEdgeReproducesNoneExactly) {
   Scene scene = scene_named("front");
   scene.strategies.edge.k = 0.0;
   const auto runs = compare(scene, {"none", "edge"}, false);
@@ -44,7 +44,7 @@ TEST(Comparison, ZeroGainEdgeReproducesNoneExactly) {
   EXPECT_GT(runs[1].summary.activity.candidates_initial, 0);  // it predicted, it just did not push
 }
 
-TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
+TEST(Evaluation, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
   std::vector<Evaluation> runs(4);
   runs[0].summary.strategy = "none";
   runs[1].summary.strategy = "a";
@@ -58,7 +58,7 @@ TEST(Comparison, BestForThesisGoalsPrefersNoIntersectionsThenLeastDeviation) {
   EXPECT_EQ(*best, 3u);
 }
 
-TEST(Comparison, WorkerProcessesGiveTheSameResultsAsOneProcess) {
+TEST(Evaluation, WorkerProcessesGiveTheSameResultsAsOneProcess) {
   const Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
   const std::vector<std::string> all{"none",       "wall", "deflect-all",
                                      "near-plane", "edge", "edge-min"};

@@ -1,6 +1,5 @@
 // fragsim suite: the battery's size and combinations, the aggregation and the recommendation on
-// hand-made results, and the command end to end (a slice gives the same CSV for any --jobs; bad
-// input is one line and status 2).
+// hand-made results. The command end to end is in tests/cli/suite_command_test.cpp.
 
 #include "experiments/suite.hpp"
 
@@ -11,14 +10,13 @@
 #include <sstream>
 
 #include "sim/scene_strategies.hpp"
-#include "support/run_fragsim.hpp"
 
 namespace fragsim {
 namespace {
 
 const std::string kSceneDir = std::string(FRAGSIM_DATA_DIR) + "/scenes";
 
-TEST(SuiteBattery, DefaultSeedsGiveAtLeastAThousandRunsOfEveryCombination) {
+TEST(Suite, DefaultSeedsGiveAtLeastAThousandRunsOfEveryCombination) {
   const std::vector<SuiteRun> runs = suite_runs({});
   // 5 scenes x 2 distances x 2 aims x 2 speeds x 4 camera modes x 9 seeds.
   EXPECT_EQ(runs.size(), 1440u);
@@ -44,7 +42,7 @@ TEST(SuiteBattery, DefaultSeedsGiveAtLeastAThousandRunsOfEveryCombination) {
   EXPECT_EQ(runs.back().scene, "distance");
 }
 
-TEST(SuiteBattery, ModesSetTheCameraKeys) {
+TEST(Suite, ModesSetTheCameraKeys) {
   auto keys = [](const SuiteRun& r) {
     std::map<std::string, std::string> m;
     for (const SceneOverride& o : suite_overrides(r)) m[o.key] = o.value;
@@ -75,7 +73,7 @@ TEST(SuiteBattery, ModesSetTheCameraKeys) {
   EXPECT_FALSE(is_player_mode("path"));
 }
 
-TEST(SuiteBattery, EveryStrategyIsARowAndEdgeMinOncePerCameraModel) {
+TEST(Suite, EveryStrategyIsARowAndEdgeMinOncePerCameraModel) {
   const std::vector<SuiteVariant> v = suite_variants();
   ASSERT_FALSE(v.empty());
   EXPECT_EQ(v.front().label, "none");
@@ -92,14 +90,14 @@ TEST(SuiteBattery, EveryStrategyIsARowAndEdgeMinOncePerCameraModel) {
   EXPECT_EQ(labels.size(), v.size());
 }
 
-TEST(SuiteBattery, EveryEntryModeAndVariantIsAValidScene) {
+TEST(Suite, EveryEntryModeAndVariantIsAValidScene) {
   const std::vector<SuiteRun> runs = suite_runs({});
   const auto scenes = load_suite_scenes(kSceneDir, runs);
   EXPECT_EQ(scenes.size(), 5u);
   EXPECT_NO_THROW(validate_suite(scenes, runs, suite_variants()));
 }
 
-TEST(SuiteBattery, SelectionFiltersKeepBatteryOrder) {
+TEST(Suite, SelectionFiltersKeepBatteryOrder) {
   SuiteSelection sel;
   sel.scenes = {"close", "thesis125"};  // listed out of table order
   sel.modes = {"path"};
@@ -142,7 +140,7 @@ std::vector<SuiteOutcome> hand_made() {
   };
 }
 
-TEST(SuiteAggregation, CleanShareMeansAndKeptNearMisses) {
+TEST(Suite, CleanShareMeansAndKeptNearMisses) {
   const std::vector<SuiteRow> rows = aggregate_suite(hand_made());
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0].variant, "none");
@@ -161,7 +159,7 @@ TEST(SuiteAggregation, CleanShareMeansAndKeptNearMisses) {
   EXPECT_DOUBLE_EQ(edge.strategy_ms_median, 0.3);   // median of 0.2, 0.4, 0.3
 }
 
-TEST(SuiteAggregation, KeepSelectsRunsAndEvenMediansAverage) {
+TEST(Suite, KeepSelectsRunsAndEvenMediansAverage) {
   const std::vector<SuiteRow> rows =
       aggregate_suite(hand_made(), [](std::size_t run) { return run <= 1; });
   ASSERT_EQ(rows.size(), 2u);
@@ -174,7 +172,7 @@ TEST(SuiteAggregation, KeepSelectsRunsAndEvenMediansAverage) {
   EXPECT_TRUE(aggregate_suite(hand_made(), [](std::size_t) { return false; }).empty());
 }
 
-TEST(SuiteAggregation, NoNearMissesToKeepIsNotAShare) {
+TEST(Suite, NoNearMissesToKeepIsNotAShare) {
   const std::vector<SuiteRow> rows = aggregate_suite(
       {outcome(0, "none", 0, 0, 0.0, 0, 0.0), outcome(0, "wall", 0, 0, 0.1, 0, 0.0)});
   EXPECT_FALSE(rows[1].near_misses_kept().has_value());
@@ -189,7 +187,7 @@ SuiteRow row(const std::string& variant, int runs, int clean, double dev) {
   return r;
 }
 
-TEST(SuiteRecommendation, PlayerShareThenAllRunsThenDeviation) {
+TEST(Suite, PlayerShareThenAllRunsThenDeviation) {
   // none is never recommended, even when cleanest. B and C tie on the player runs; C is cleaner
   // over all runs, though A deviates least and B less than C.
   const std::vector<SuiteRow> player{row("none", 10, 10, 0.0), row("A", 10, 8, 0.1),
@@ -212,7 +210,7 @@ TEST(SuiteRecommendation, PlayerShareThenAllRunsThenDeviation) {
   EXPECT_EQ(recommend_suite(player, same)->variant, "B");
 }
 
-TEST(SuiteRecommendation, WithoutPlayerRunsAllRunsDecide) {
+TEST(Suite, WithoutPlayerRunsAllRunsDecide) {
   const std::vector<SuiteRow> all{row("none", 4, 1, 0.0), row("A", 4, 3, 0.1), row("B", 4, 4, 5.0)};
   const auto best = recommend_suite({}, all);
   ASSERT_TRUE(best);
@@ -221,7 +219,7 @@ TEST(SuiteRecommendation, WithoutPlayerRunsAllRunsDecide) {
   EXPECT_FALSE(recommend_suite({}, {row("none", 4, 1, 0.0)}).has_value());
 }
 
-TEST(SuiteCsv, OneRowPerRunAndVariantWithTheEntryFields) {
+TEST(Suite, OneRowPerRunAndVariantWithTheEntryFields) {
   const std::vector<SuiteRun> runs{{"close", "1.5", "future", "6", "path", 1},
                                    {"close", "1.5", "future", "6", "player", 1},
                                    {"close", "2.2", "present", "9", "player-instant", 3}};
@@ -247,78 +245,35 @@ TEST(SuiteCsv, OneRowPerRunAndVariantWithTheEntryFields) {
   EXPECT_EQ(rows, 6);
 }
 
-// ---- The command, end to end. ----
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-std::string read(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The CSV without its last column, strategy_ms_median: the only one that is a timing.
-std::string without_timing(const std::string& csv) {
-  std::istringstream in(csv);
-  std::string out, line;
-  while (std::getline(in, line)) out += line.substr(0, line.rfind(',')) + "\n";
-  return out;
-}
-
-std::string slice_args(const std::string& out, int jobs) {
-  // 2 entries x 1 seed: thesis125 at 4 m, aim future, speeds 3 and 6 m/s, path camera.
-  return "suite --scene-dir " + kSceneDir +
-         " --scenes thesis125 --modes path --seeds 1 --limit 2 --jobs " + std::to_string(jobs) +
-         " --force --out " + out;
-}
-
-TEST(SuiteCommand, SliceGivesTheSameCsvForAnyJobs) {
-  const std::string a = ::testing::TempDir() + "/fragsim_suite_j1.csv";
-  const std::string b = ::testing::TempDir() + "/fragsim_suite_j2.csv";
-  const test::Result r1 = test::run_fragsim(slice_args(a, 1));
-  const test::Result r2 = test::run_fragsim(slice_args(b, 2));
-  ASSERT_EQ(r1.status, 0) << r1.out;
-  ASSERT_EQ(r2.status, 0) << r2.out;
-  const std::string ca = read(a), cb = read(b);
-  EXPECT_EQ(lines(ca), 1 + 2 * static_cast<int>(suite_variants().size()));
-  EXPECT_EQ(without_timing(ca), without_timing(cb));
-  EXPECT_NE(r1.out.find("mode path"), std::string::npos) << r1.out;
-  EXPECT_NE(r1.out.find("most robust"), std::string::npos) << r1.out;
-  EXPECT_NE(ca.find("thesis125,4,future,3,1,path,edge-min/reachable,"), std::string::npos) << ca;
-  EXPECT_NE(ca.find("thesis125,4,future,6,1,path,none,"), std::string::npos) << ca;
-}
-
-void expect_usage_error(const std::string& args, const std::string& option) {
-  const test::Result r = test::run_fragsim(args);
-  EXPECT_EQ(r.status, 2) << args << ": " << r.out;
-  EXPECT_EQ(lines(r.out), 1) << args << ": " << r.out;
-  EXPECT_NE(r.out.find(option), std::string::npos) << args << ": " << r.out;
-}
-
-TEST(SuiteCommand, BadInputIsOneLineNamingTheOption) {
-  expect_usage_error("suite --frobnicate", "--frobnicate");
-  expect_usage_error("suite front", "'front'");
-  expect_usage_error("suite --seeds 0", "--seeds");
-  expect_usage_error("suite --seeds many", "--seeds");
-  expect_usage_error("suite --scenes nowhere", "--scenes");
-  expect_usage_error("suite --modes drone", "--modes");
-  expect_usage_error("suite --jobs 0", "--jobs");
-  expect_usage_error("suite --limit 0", "--limit");
-  expect_usage_error("suite --scene-dir /nonexistent/scenes", "--scene-dir");
-  expect_usage_error("suite --scene-dir " + kSceneDir + " --out /nonexistent/dir/suite.csv",
-                     "--out");
-}
-
-TEST(SuiteCommand, HelpListsTheOptions) {
-  const test::Result r = test::run_fragsim("suite --help");
-  EXPECT_EQ(r.status, 0);
-  EXPECT_NE(r.out.find("--seeds"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("1440 runs"), std::string::npos) << r.out;
+TEST(Suite, ReadsBackTheRunsAndOutcomesSuiteCsvWrote) {
+  const std::vector<SuiteRun> runs = {{"front", "6", "future", "10", "path", 1},
+                                      {"front", "6", "future", "10", "path", 2},
+                                      {"close", "1.5", "present", "9", "player", 2}};
+  std::vector<SuiteOutcome> outcomes;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    for (const char* v : {"none", "edge"}) {
+      SuiteOutcome o;
+      o.run = r;
+      o.variant = v;
+      o.near_fragments = static_cast<int>(r);
+      o.camera_hits = 1;
+      o.deviation_mean_m = 0.1 * static_cast<double>(r) + 1e-17;
+      o.near_misses = 7;
+      o.strategy_ms_median = 0.003;
+      outcomes.push_back(o);
+    }
+  }
+  const std::string csv = suite_csv(runs, outcomes);
+  const SuiteTable t = read_suite_csv(csv);
+  ASSERT_EQ(t.runs.size(), 3u);
+  EXPECT_EQ(t.variants, 2u);
+  EXPECT_EQ(t.runs[2].scene, "close");
+  EXPECT_EQ(t.runs[1].seed, 2u);
+  ASSERT_EQ(t.outcomes.size(), 6u);
+  EXPECT_EQ(t.outcomes[5].run, 2u);
+  EXPECT_EQ(suite_csv(t.runs, t.outcomes), csv);  // every number back to its last bit
+  EXPECT_THROW(read_suite_csv("a,b\n"), std::runtime_error);
+  EXPECT_THROW(read_suite_csv(csv + "front,6\n"), std::runtime_error);
 }
 
 }  // namespace

@@ -1,17 +1,11 @@
-// fragsim sweep: --vary specifications, the job order, the single-key summary on hand-made rows,
-// and the command end to end (byte-identical output whatever the number of worker processes).
+// fragsim sweep: --vary specifications, the job order, the single-key summary on hand-made rows.
+// The command end to end is in tests/cli/sweep_command_test.cpp.
 
 #include "experiments/sweep.hpp"
 
 #include <gtest/gtest.h>
 
-#include "support/run_fragsim.hpp"
-
 #include <array>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -24,7 +18,7 @@ namespace {
 
 using Values = std::vector<std::string>;
 
-TEST(SweepSpec, CommaListKeepsTheTextOfEachValue) {
+TEST(Sweep, CommaListKeepsTheTextOfEachValue) {
   EXPECT_EQ(parse_sweep_values("1,2,5"), (Values{"1", "2", "5"}));
   EXPECT_EQ(parse_sweep_values(" thesis , discrete "), (Values{"thesis", "discrete"}));
   // Vectors are values with spaces; commas separate the values.
@@ -32,7 +26,7 @@ TEST(SweepSpec, CommaListKeepsTheTextOfEachValue) {
   EXPECT_EQ(parse_sweep_values("0.25"), (Values{"0.25"}));
 }
 
-TEST(SweepSpec, IntegerRangeIncludesBothEnds) {
+TEST(Sweep, IntegerRangeIncludesBothEnds) {
   const Values v = parse_sweep_values("1:20:1");
   ASSERT_EQ(v.size(), 20u);
   EXPECT_EQ(v.front(), "1");
@@ -42,7 +36,7 @@ TEST(SweepSpec, IntegerRangeIncludesBothEnds) {
   EXPECT_EQ(parse_sweep_values("3:3:1"), (Values{"3"}));
 }
 
-TEST(SweepSpec, FloatRangeNeitherLosesTheEndNorShowsRounding) {
+TEST(Sweep, FloatRangeNeitherLosesTheEndNorShowsRounding) {
   // (0.5 - 0.1) / 0.1 is 3.9999999999999996 and 0.1 + 2 * 0.1 is 0.30000000000000004.
   EXPECT_EQ(parse_sweep_values("0.1:0.5:0.1"), (Values{"0.1", "0.2", "0.3", "0.4", "0.5"}));
   EXPECT_EQ(parse_sweep_values("-0.3:0.3:0.1"),
@@ -53,7 +47,7 @@ TEST(SweepSpec, FloatRangeNeitherLosesTheEndNorShowsRounding) {
   EXPECT_EQ(parse_sweep_values("1:100000:1").size(), kMaxRangeValues);
 }
 
-TEST(SweepSpec, BadSpecsAreRejected) {
+TEST(Sweep, BadSpecsAreRejected) {
   for (const char* bad :
        {"",        " ",       "1,,2",       "1,",         ",1",         "1,1",
         "1:2",     "1:2:3:4", "1:2:0",      "1:2:-1",     "2:1:1",      "a:2:1",
@@ -63,7 +57,7 @@ TEST(SweepSpec, BadSpecsAreRejected) {
   }
 }
 
-TEST(SweepSpec, VaryIsKeyEqualsSpec) {
+TEST(Sweep, VaryIsKeyEqualsSpec) {
   const SweepAxis a = parse_vary("object.distance_m=1:3:1");
   EXPECT_EQ(a.key, "object.distance_m");
   EXPECT_EQ(a.values, (Values{"1", "2", "3"}));
@@ -73,7 +67,7 @@ TEST(SweepSpec, VaryIsKeyEqualsSpec) {
   EXPECT_THROW(parse_vary("edge.k="), SweepError);
 }
 
-TEST(SweepSpec, Seeds) {
+TEST(Sweep, Seeds) {
   EXPECT_EQ(seeds_up_to(3), (std::vector<std::uint64_t>{1, 2, 3}));
   EXPECT_THROW(seeds_up_to(0), SweepError);
   EXPECT_THROW(seeds_up_to(-2), SweepError);
@@ -84,7 +78,7 @@ TEST(SweepSpec, Seeds) {
   }
 }
 
-TEST(SweepJobs, CartesianOrderFirstAxisSlowestSeedFastest) {
+TEST(Sweep, CartesianOrderFirstAxisSlowestSeedFastest) {
   const std::vector<SweepAxis> axes{{"a", {"1", "2"}}, {"b", {"x", "y", "z"}}};
   const std::vector<SweepJob> jobs = sweep_jobs(axes, {7, 9});
   ASSERT_EQ(jobs.size(), 12u);
@@ -104,7 +98,7 @@ TEST(SweepJobs, CartesianOrderFirstAxisSlowestSeedFastest) {
   EXPECT_EQ(combos[3], (std::vector<std::size_t>{1, 0}));
 }
 
-TEST(SweepJobs, TooManyJobsAreRefusedBeforeAllocating) {
+TEST(Sweep, TooManyJobsAreRefusedBeforeAllocating) {
   const Values thousand = parse_sweep_values("1:1000:1");
   EXPECT_EQ(sweep_jobs({{"a", thousand}, {"b", {"1", "2"}}}, {1, 2}).size(), 4000u);
   EXPECT_THROW(sweep_jobs({{"a", thousand}, {"b", thousand}}, {1, 2}), SweepError);
@@ -118,7 +112,7 @@ SweepOutcome row(const std::string& strategy, const std::string& value, std::uin
   return {value, seed, strategy, intersections, deviation};
 }
 
-TEST(SweepSummary, ThresholdIsTheStartOfTheAllZeroTail) {
+TEST(Sweep, ThresholdIsTheStartOfTheAllZeroTail) {
   std::vector<SweepOutcome> rows;
   // Values out of order and "10" after "8": the order must be numeric, not as given or textual.
   const std::vector<std::pair<std::string, std::array<int, 2>>> edge{
@@ -160,14 +154,14 @@ TEST(SweepSummary, ThresholdIsTheStartOfTheAllZeroTail) {
   EXPECT_NEAR(stats[2].values[0].deviation_mean_m, 0.5, 1e-12);
 }
 
-TEST(SweepSummary, LastValueFailingMeansNoThreshold) {
+TEST(Sweep, LastValueFailingMeansNoThreshold) {
   const std::vector<SweepOutcome> rows{row("edge", "1", 1, 0, 0.0), row("edge", "2", 1, 1, 0.0)};
   const auto stats = summarise_single_key(rows);
   ASSERT_EQ(stats.size(), 1u);
   EXPECT_FALSE(stats[0].threshold.has_value());
 }
 
-TEST(SweepSummary, NonNumericValuesKeepTheirOrder) {
+TEST(Sweep, NonNumericValuesKeepTheirOrder) {
   const std::vector<SweepOutcome> rows{row("edge", "thesis", 1, 1, 2.0),
                                        row("edge", "discrete", 1, 0, 1.0)};
   EXPECT_FALSE(sweep_values_numeric(rows));
@@ -178,7 +172,7 @@ TEST(SweepSummary, NonNumericValuesKeepTheirOrder) {
   EXPECT_EQ(stats[0].values[*stats[0].threshold].value, "discrete");
 }
 
-TEST(SweepSummary, ReadsOutcomesFromTheCsvByColumnName) {
+TEST(Sweep, ReadsOutcomesFromTheCsvByColumnName) {
   const std::string csv =
       "edge.k,seed,scene,strategy,near_fragments,camera_hit_fragments,deviation_mean_m\n"
       "0.5,3,s,edge,1,2,0.25\n"
@@ -193,117 +187,6 @@ TEST(SweepSummary, ReadsOutcomesFromTheCsvByColumnName) {
   EXPECT_EQ(rows[1].intersections, 0);
   EXPECT_THROW(read_sweep_outcomes(csv, "edge.a_max_mps2"), std::runtime_error);
   EXPECT_THROW(read_sweep_outcomes(csv + "1,2\n", "edge.k"), std::runtime_error);
-}
-
-// ---- The command end to end. ----
-
-using test::Result;
-Result fragsim(const std::string& args) {
-  return test::run_fragsim(args);
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-int lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
-}
-
-const std::string kTiny = "sweep --scene " + std::string(FRAGSIM_DATA_DIR) +
-                          "/scenes/thesis125.ini --object.splits 2 --simulation.duration_s 0.5 "
-                          "--vary object.distance_m=3,5 --seeds 2 --strategies none,edge";
-
-std::string fresh_dir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/" + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-TEST(SweepCommand, OutputIsTheSameWhateverTheNumberOfWorkers) {
-  const std::string dir = fresh_dir("fragsim_sweep_e2e");
-  const Result one = fragsim(kTiny + " --jobs 1 --out " + dir + "/one.csv");
-  ASSERT_EQ(one.status, 0) << one.out;
-  const Result two = fragsim(kTiny + " --jobs 2 --out " + dir + "/two.csv");
-  ASSERT_EQ(two.status, 0) << two.out;
-  const std::string a = read_file(dir + "/one.csv");
-  const std::string b = read_file(dir + "/two.csv");
-  EXPECT_EQ(a, b);
-  EXPECT_EQ(lines(a), 1 + 2 * 2 * 2);  // header + 2 values x 2 seeds x 2 strategies
-  EXPECT_EQ(a.rfind("object.distance_m,seed,scene,strategy,", 0), 0u) << a;
-  EXPECT_NE(a.find("\n5,2,thesis125,edge,"), std::string::npos) << a;
-  EXPECT_NE(one.out.find("smallest object.distance_m"), std::string::npos) << one.out;
-  // Only the two outputs: every worker's temporary file is gone.
-  int files = 0;
-  for (const auto& f : std::filesystem::directory_iterator(dir)) files += f.is_regular_file();
-  EXPECT_EQ(files, 2);
-
-  const Result again = fragsim(kTiny + " --jobs 2 --out " + dir + "/one.csv");
-  EXPECT_EQ(again.status, 2) << again.out;
-  EXPECT_NE(again.out.find("--force"), std::string::npos) << again.out;
-  const Result forced = fragsim(kTiny + " --jobs 2 --force --out " + dir + "/one.csv");
-  EXPECT_EQ(forced.status, 0) << forced.out;
-  EXPECT_EQ(read_file(dir + "/one.csv"), b);
-}
-
-TEST(SweepCommand, BadVaryValueIsOneLineNamingOptionAndValue) {
-  const std::string dir = fresh_dir("fragsim_sweep_bad");
-  const Result r = fragsim(kTiny + " --vary edge.k=1,-2 --out " + dir + "/x.csv");
-  EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(lines(r.out), 1) << r.out;
-  EXPECT_NE(r.out.find("--vary edge.k=-2"), std::string::npos) << r.out;
-  EXPECT_FALSE(std::filesystem::exists(dir + "/x.csv"));
-
-  const Result range = fragsim(kTiny.substr(0, kTiny.find("--vary")) +
-                               "--vary object.distance_m=1:5:0 --out " + dir + "/x.csv");
-  EXPECT_EQ(range.status, 2);
-  EXPECT_EQ(lines(range.out), 1) << range.out;
-  EXPECT_NE(range.out.find("step must be > 0"), std::string::npos) << range.out;
-}
-
-// Test-only environment variables for one call (sim/simulation.hpp), removed again after it.
-class ScopedEnv {
- public:
-  explicit ScopedEnv(std::vector<std::pair<std::string, std::string>> vars)
-      : vars_(std::move(vars)) {
-    for (const auto& [name, value] : vars_) ::setenv(name.c_str(), value.c_str(), 1);
-  }
-  ~ScopedEnv() {
-    for (const auto& [name, value] : vars_) ::unsetenv(name.c_str());
-  }
-  ScopedEnv(const ScopedEnv&) = delete;
-  ScopedEnv& operator=(const ScopedEnv&) = delete;
-
- private:
-  std::vector<std::pair<std::string, std::string>> vars_;
-};
-
-TEST(SweepCommand, AWorkerThatDiesIsOneLineNamingTheJob) {
-  // 3 jobs of 60 steps (none, then edge) on 2 workers: worker 0 runs jobs 1 and 3, worker 1 job 2
-  // only, so step 100 of a worker is reached once, in job 3, where that worker kills itself.
-  const std::string dir = fresh_dir("fragsim_sweep_crash");
-  Result r;
-  {
-    const ScopedEnv env({{"FRAGSIM_TEST_RAISE_AT_STEP", "100"},
-                         {"FRAGSIM_TEST_RAISE_SIGNAL", "KILL"},
-                         {"FRAGSIM_TEST_RAISE_IN", "self"}});
-    r = fragsim("sweep --scene " + std::string(FRAGSIM_DATA_DIR) +
-                "/scenes/thesis125.ini --object.splits 2 --simulation.duration_s 0.5 --vary "
-                "object.distance_m=3,5,7 --strategies none,edge --jobs 2 --out " +
-                dir + "/x.csv");
-  }
-  EXPECT_EQ(r.status, 1) << r.out;
-  EXPECT_EQ(r.out,
-            "fragsim sweep: job 3 (object.distance_m=7, seed 1): the worker process was killed "
-            "by signal 9 (Killed)\n");
-  EXPECT_TRUE(std::filesystem::is_empty(dir));
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

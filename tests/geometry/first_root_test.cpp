@@ -303,7 +303,7 @@ TEST(FirstRoot, FirstNonpositiveNearFindsTheSameCrossing) {
 }
 
 // The batch with guesses gives first_nonpositive_near's answers bit for bit.
-TEST(FirstRootBatch, GuessesGiveTheSameAnswersAsOneAtATime) {
+TEST(FirstRoot, GuessesGiveTheSameAnswersAsOneAtATime) {
   std::mt19937_64 rng(33);
   std::normal_distribution<double> normal(0.0, 1.0);
   std::vector<Quartic> polys;
@@ -355,7 +355,7 @@ namespace {
 
 // The batch must give first_nonpositive's answers bit for bit (`edge`'s pinned results rest on
 // it): every kind of case the scalar path has, in one batch so that their searches interleave.
-TEST(FirstRootBatch, SameAnswersBitForBitAsOneAtATime) {
+TEST(FirstRoot, SameAnswersBitForBitAsOneAtATime) {
   std::vector<Quartic> polys = {
       from_roots(0.5, 2.0, 3.0, 4.0),      // an entry at 0.5
       from_roots(-1.0, 2.0, 5.0, 6.0),     // inside at the start: 0

@@ -62,7 +62,7 @@ TEST(Frustum, NormalizedCoordinatesOfTheImageCorner) {
   EXPECT_EQ(n.y(), -1.0);
 }
 
-TEST(PixelProjection, ImageCornersAndCentre) {
+TEST(Frustum, ImageCornersAndCentre) {
   const Frustum f(60.0, 2.0, 0.1, 500.0);
   const PixelProjection p(f, 200, 100);
   const double z = 5.0;

@@ -174,7 +174,7 @@ TEST(ExitMetric, ExitNamesForCsv) {
   EXPECT_EQ(exit_name(Exit::kStayed), "stayed");
 }
 
-TEST(ExitMetricNearMiss, FastPassBesideTheEyeBetweenSnapshots) {
+TEST(ExitMetric, FastPassBesideTheEyeBetweenSnapshots) {
   // 0.5 m beside the eye at depth 0, reached only between the two snapshots: both samples are
   // over 3 m from the eye. The box (half 0.05 m) stays 0.45 m from the axis, clear of the near
   // rectangle (0.103 m) and of the camera body (0.15 m).
@@ -188,11 +188,11 @@ TEST(ExitMetricNearMiss, FastPassBesideTheEyeBetweenSnapshots) {
   EXPECT_EQ(s.intersections.near_misses, 1);
 }
 
-TEST(ExitMetricNearMiss, SlowPassWithinTheDistance) {
+TEST(ExitMetric, SlowPassWithinTheDistance) {
   EXPECT_TRUE(play({{{{0, 0.8, 3}, {0, 0.8, 0.5}, {0, 0.8, -1}}}, {}, {}}, 1.0).near_miss(0));
 }
 
-TEST(ExitMetricNearMiss, ThroughTheNearRectangleIsNoMiss) {
+TEST(ExitMetric, ThroughTheNearRectangleIsNoMiss) {
   const ExitMetric m = play({{{{0, 0, 3}, {0, 0, -3}}}, {}, {}}, 1.0);
   EXPECT_TRUE(m.touched(0));
   EXPECT_FALSE(m.near_miss(0));
@@ -201,20 +201,20 @@ TEST(ExitMetricNearMiss, ThroughTheNearRectangleIsNoMiss) {
   EXPECT_EQ(s.intersections.near_misses, 0);
 }
 
-TEST(ExitMetricNearMiss, ReportedCameraHitIsNoMiss) {
+TEST(ExitMetric, ReportedCameraHitIsNoMiss) {
   // The same geometric fly-by as above, but the physics' sensor saw it touch the camera.
   const ExitMetric m = play({{{{0.5, 0, 3}, {0.5, 0, -3}}}, {{}, {0}}, {}}, 1.0);
   EXPECT_TRUE(m.touched(0));
   EXPECT_FALSE(m.near_miss(0));
 }
 
-TEST(ExitMetricNearMiss, TwoMetresAwayIsNoMiss) {
+TEST(ExitMetric, TwoMetresAwayIsNoMiss) {
   const ExitMetric m = play({{{{2, 0, 3}, {2, 0, -3}}}, {}, {}}, 1.0);
   EXPECT_FALSE(m.near_miss(0));
   EXPECT_FALSE(m.touched(0));
 }
 
-TEST(ExitMetricNearMiss, CountsFragmentsNotSteps) {
+TEST(ExitMetric, CountsFragmentsNotSteps) {
   // One fragment passes close twice, one once, one far away.
   const ExitMetric m = play({{{{0.5, 0, 3}, {0.5, 0, -3}, {0.5, 0, 3}},
                               {{0, 0.6, 4}, {0, 0.6, 2}, {0, 0.6, -2}},

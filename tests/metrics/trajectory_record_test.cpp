@@ -15,7 +15,7 @@ using test::play;
 using test::record;
 using test::Trajectory;
 
-TEST(DeviationTrajectoryRecord, StoresEverySnapshotIncludingStepZero) {
+TEST(TrajectoryRecord, StoresEverySnapshotIncludingStepZero) {
   const Trajectory run = make_run(3, 4);
   const TrajectoryRecord ref = record(run);
   EXPECT_EQ(ref.steps(), 5);
@@ -29,7 +29,7 @@ TEST(DeviationTrajectoryRecord, StoresEverySnapshotIncludingStepZero) {
   }
 }
 
-TEST(DeviationTrajectoryRecord, BeginStartsAFreshRecord) {
+TEST(TrajectoryRecord, BeginStartsAFreshRecord) {
   TrajectoryRecord ref;
   play(make_run(3, 4), ref);
   play(make_run(2, 1), ref);

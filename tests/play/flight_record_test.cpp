@@ -1,6 +1,6 @@
 // What a flight leaves behind, checked before anyone flies: a --record path that cannot be
 // written is named at once (it was found only when the first flight ended), and a recording
-// replays without a warning.
+// replays without a warning; each flight's files are numbered and never overwrite another's.
 
 #include "play/flight_record.hpp"
 
@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,21 @@ TEST(FlightRecord, RecordingReplaysWithoutWarnings) {
   const Scene replay = load_scene(paths.scene_ini, {}, &warnings);
   EXPECT_TRUE(warnings.empty()) << warnings.front();
   EXPECT_EQ(replay.camera.track_samples.size(), samples.size());
+}
+
+TEST(FlightRecord, NumbersNeverOverwriteAndRequestedNamesCount) {
+  test::UniqueDir dir("fragsim_play_paths");
+  const auto touch = [&](const char* name) { std::ofstream(dir.path() / name) << "x"; };
+  EXPECT_EQ(record_paths("", 1, dir.str()).track_csv, (dir.path() / "play-001.csv").string());
+  touch("play-001.csv");
+  touch("play-002.ini");  // a scene alone still takes its number
+  const RecordPaths p = record_paths("", 7, dir.str());
+  EXPECT_EQ(p.track_csv, (dir.path() / "play-003.csv").string());
+  EXPECT_EQ(p.scene_ini, (dir.path() / "play-003.ini").string());
+  EXPECT_EQ(record_paths("out/f.csv", 1, "").track_csv, "out/f.csv");
+  EXPECT_EQ(record_paths("out/f.csv", 1, "").scene_ini, "out/f.ini");
+  EXPECT_EQ(record_paths("out/f.csv", 3, "").track_csv, "out/f-3.csv");
+  EXPECT_EQ(record_paths("out/f.csv", 3, "").scene_ini, "out/f-3.ini");
 }
 
 }  // namespace

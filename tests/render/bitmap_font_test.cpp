@@ -11,7 +11,7 @@
 namespace fragsim {
 namespace {
 
-TEST(Font, DrawsInsideItsBoxAndMeasuresIt) {
+TEST(BitmapFont, DrawsInsideItsBoxAndMeasuresIt) {
   EXPECT_EQ(text_width_px("t = 0.30 s", 1), 10 * kGlyphAdvancePx - 1);
   EXPECT_EQ(text_width_px("ab", 2), 2 * (2 * kGlyphAdvancePx - 1));
   for (const char c : std::string("0123456789abcdefghijklmnopqrstuvwxyz-.= s")) {

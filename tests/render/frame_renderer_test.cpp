@@ -49,7 +49,7 @@ std::vector<std::vector<bool>> drawn(const Image& img, const CameraPose& cam = s
 
 const Eigen::Vector3d kTowardCamera{0.0, 0.0, 1.0};  // the outward normal of a box's near face
 
-TEST(Frame, SquareFacingTheCameraCoversThePredictedRectangle) {
+TEST(FrameRenderer, SquareFacingTheCameraCoversThePredictedRectangle) {
   // A 1 m square plate (1 mm thick) at depth 5, its centre at (0.3, 0.2): its near face at depth
   // 4.9995 spans columns 100 + 100 (-0.2 .. 0.8) / 4.9995 and rows 100 - 100 (0.7 .. -0.3)
   // / 4.9995.
@@ -117,7 +117,7 @@ Eigen::Vector2d pixel(double x, double y, double depth) {
   return {100.0 + 100.0 * x / depth, 100.0 - 100.0 * y / depth};
 }
 
-TEST(Frame, TetrahedronFaceOnShowsItsProjectedTriangle) {
+TEST(FrameRenderer, TetrahedronFaceOnShowsItsProjectedTriangle) {
   // A regular tetrahedron of circumradius R = 1.5 m at depth 5, a face toward the camera (vertex
   // 0 turned away, along -z): the face lies at depth 5 - R / 3 = 4.5, its vertices on a circle of
   // radius 2 sqrt(2) R / 3 = sqrt(2) about the view axis, and the far vertex projects inside it,
@@ -141,7 +141,7 @@ TEST(Frame, TetrahedronFaceOnShowsItsProjectedTriangle) {
   EXPECT_EQ(img.at(100, 100), shaded_colour(fragment_colour(0), kTowardCamera));
 }
 
-TEST(Frame, TetrahedronEdgeOnShowsAQuadrilateral) {
+TEST(FrameRenderer, TetrahedronEdgeOnShowsAQuadrilateral) {
   // Unturned, the tetrahedron of half cube side a = 1 at depth 5 shows two edges: the one from
   // (1, 1) to (-1, -1) at depth 4 and the one from (1, -1) to (-1, 1) at depth 6. Its silhouette is
   // the kite with half diagonals 1 / 4 and 1 / 6 (x / z) along the two diagonals.
@@ -152,7 +152,7 @@ TEST(Frame, TetrahedronEdgeOnShowsAQuadrilateral) {
   expect_silhouette(drawn(render({f})), kite);
 }
 
-TEST(Frame, CubeHullDrawsAsItsBox) {
+TEST(FrameRenderer, CubeHullDrawsAsItsBox) {
   // The same turned cube as a box and as a hull: the same faces, shades and depths, so the same
   // pixels but for a pixel centre within rounding of an edge (at most 1% of the ~1400 drawn).
   const ConvexShape cube = test::box_hull(Eigen::Vector3d::Constant(0.6));
@@ -175,7 +175,7 @@ TEST(Frame, CubeHullDrawsAsItsBox) {
   EXPECT_LE(differ, drawn_px / 100);
 }
 
-TEST(Frame, TetrahedronCrossingTheNearPlaneShowsItsCut) {
+TEST(FrameRenderer, TetrahedronCrossingTheNearPlaneShowsItsCut) {
   // Vertex first through a near plane at 4.5 m: the plane cuts the three edges from vertex 0
   // (toward the camera, at depth 5 - R = 3.5) to the far face (at 5 + R / 3 = 5.5).
   const double a = 1.5 / std::sqrt(3.0);
@@ -202,7 +202,7 @@ TEST(Frame, TetrahedronCrossingTheNearPlaneShowsItsCut) {
   EXPECT_EQ(plain.at(100, 100), render({}, square_camera(4.5)).at(100, 100));
 }
 
-TEST(Frame, RightIsScreenRightAndUpIsScreenTop) {
+TEST(FrameRenderer, RightIsScreenRightAndUpIsScreenTop) {
   // A camera looking down +x: its right is +z, its up +y.
   CameraPose cam = square_camera();
   cam.forward = {1, 0, 0};
@@ -220,7 +220,7 @@ TEST(Frame, RightIsScreenRightAndUpIsScreenTop) {
   EXPECT_FALSE(d[100 + static_cast<int>(100.0 / 3.0)][100]);
 }
 
-TEST(Frame, FacesAreShadedByTheirWorldNormal) {
+TEST(FrameRenderer, FacesAreShadedByTheirWorldNormal) {
   // A cube below and left of the view axis shows its near face, its top and its right side.
   FragmentState f = box(-1.0, -0.6, -1.0, -0.6, 2.0, 2.4);
   const Image img = render({f});
@@ -238,7 +238,7 @@ TEST(Frame, FacesAreShadedByTheirWorldNormal) {
   EXPECT_EQ(shaded_colour(base, {0, -1, 0}), shaded_colour(base, {1, 0, 0}));  // both unlit
 }
 
-TEST(Frame, NearerOfTwoOverlappingBoxesWinsWhateverTheOrder) {
+TEST(FrameRenderer, NearerOfTwoOverlappingBoxesWinsWhateverTheOrder) {
   const FragmentState near = box(-0.5, 0.5, -0.5, 0.5, 3.0, 3.2);
   const FragmentState far = box(-0.2, 1.0, -0.2, 1.0, 5.0, 5.2);
   // Fragment 0 drawn first, then 1: the colour at the centre is the near box's, whichever it is.
@@ -250,7 +250,7 @@ TEST(Frame, NearerOfTwoOverlappingBoxesWinsWhateverTheOrder) {
   EXPECT_EQ(img.at(100 + 17, 100 - 17), shaded_colour(fragment_colour(1), kTowardCamera));
 }
 
-TEST(Frame, BoxCrossingTheNearPlaneIsCutOpen) {
+TEST(FrameRenderer, BoxCrossingTheNearPlaneIsCutOpen) {
   // Depths 0.05 .. 0.5 across the near plane at 0.1, x in [0.02, 0.06], y in [-0.1, 0.1].
   // - In front of the plane (not drawn): x / z up to 0.06 / 0.05 = 1.2, beyond what the part
   //   behind reaches (0.06 / 0.1 = 0.6): column 170 (x / z = 0.7).
@@ -273,7 +273,7 @@ TEST(Frame, BoxCrossingTheNearPlaneIsCutOpen) {
   EXPECT_FALSE(cut.at(140, 100) == kCutColour);
 }
 
-TEST(Frame, BoxWhollyInFrontOfTheNearPlaneOrBehindTheEyeIsNotDrawn) {
+TEST(FrameRenderer, BoxWhollyInFrontOfTheNearPlaneOrBehindTheEyeIsNotDrawn) {
   const auto d1 = drawn(render({box(-0.01, 0.01, -0.01, 0.01, 0.02, 0.05)}));
   const auto d2 = drawn(render({box(-1, 1, -1, 1, -3, -2)}));
   for (int y = 0; y < kSize; ++y) {
@@ -283,14 +283,14 @@ TEST(Frame, BoxWhollyInFrontOfTheNearPlaneOrBehindTheEyeIsNotDrawn) {
   }
 }
 
-TEST(Frame, NonFiniteFragmentIsSkipped) {
+TEST(FrameRenderer, NonFiniteFragmentIsSkipped) {
   FragmentState f = box(-0.5, 0.5, -0.5, 0.5, 3, 3.2);
   f.position_m.x() = std::nan("");
   const Image img = render({f});
   EXPECT_EQ(img.bytes(), render({}).bytes());
 }
 
-TEST(Frame, GroundBelowTheHorizonSkyAbove) {
+TEST(FrameRenderer, GroundBelowTheHorizonSkyAbove) {
   Scene scene;  // ground at y = 0
   CameraPose cam = square_camera();
   cam.eye_m = {0.0, 1.6, 0.0};
@@ -314,7 +314,7 @@ TEST(Frame, GroundBelowTheHorizonSkyAbove) {
   EXPECT_EQ(with_box.at(100, 152), img.at(100, 152));
 }
 
-TEST(Frame, CandidatesAndForcesOverlays) {
+TEST(FrameRenderer, CandidatesAndForcesOverlays) {
   FragmentState f = box(-0.5, 0.5, -0.5, 0.5, 3, 4);
   f.mass_kg = 2.0;
   const std::vector<FragmentState> frags{f};
@@ -339,7 +339,7 @@ TEST(Frame, CandidatesAndForcesOverlays) {
   EXPECT_EQ(img.at(10, 10), render({f}).at(10, 10));
 }
 
-TEST(Frame, SameSnapshotGivesTheSameBytes) {
+TEST(FrameRenderer, SameSnapshotGivesTheSameBytes) {
   const Scene scene;  // with ground
   std::vector<FragmentState> frags;
   for (int i = 0; i < 50; ++i) {
@@ -371,7 +371,7 @@ Image render_faded(const std::vector<FragmentState>& frags, const std::vector<fl
   return r.render(s);
 }
 
-TEST(Frame, FadedFragmentIsDrawnDitheredByItsOpacity) {
+TEST(FrameRenderer, FadedFragmentIsDrawnDitheredByItsOpacity) {
   // A plate in front of a wall: where the dither skips the plate's pixel, the wall shows.
   const FragmentState plate = box(-0.5, 0.5, -0.5, 0.5, 2.0, 2.001);
   const FragmentState wall = box(-3, 3, -3, 3, 4.0, 4.1);

@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-TEST(Png, EncodesAndDecodesExactly) {
+TEST(Image, EncodesAndDecodesExactly) {
   Image img(7, 3, {10, 20, 30});
   img.set(6, 2, {255, 0, 128});
   const std::string png = encode_png(img);
@@ -27,7 +27,7 @@ TEST(Png, EncodesAndDecodesExactly) {
   EXPECT_THROW(encode_png(Image()), std::runtime_error);
 }
 
-TEST(Png, FileIsWrittenWholeWithoutDebris) {
+TEST(Image, FileIsWrittenWholeWithoutDebris) {
   const fs::path dir = fs::path(::testing::TempDir()) / "fragsim_png";
   fs::remove_all(dir);
   fs::create_directories(dir);

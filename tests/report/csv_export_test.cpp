@@ -23,7 +23,7 @@ namespace {
 using test::scene_named;
 using Values = std::vector<std::string>;
 
-TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
+TEST(CsvExport, SummaryCsvReadsBackAsTheTable) {
   const Scene scene = scene_named("thesis125");
   const auto runs = compare(scene, {"none", "edge", "near-plane"});
   const std::string dir = ::testing::TempDir() + "/fragsim_csv_roundtrip";
@@ -57,7 +57,7 @@ TEST(Comparison, SummaryCsvReadsBackAsTheTable) {
   EXPECT_NO_THROW(OutputFolder(dir, true));
 }
 
-TEST(Comparison, CsvIsByteIdenticalForTheSameSceneAndSeed) {
+TEST(CsvExport, CsvIsByteIdenticalForTheSameSceneAndSeed) {
   const Scene scene = scene_named("thesis125");
   const auto a = compare(scene, {"none", "wall", "deflect-all", "near-plane", "edge"});
   const auto b = compare(scene, {"none", "wall", "deflect-all", "near-plane", "edge"});
@@ -66,7 +66,7 @@ TEST(Comparison, CsvIsByteIdenticalForTheSameSceneAndSeed) {
   EXPECT_EQ(camera_csv(scene, a), camera_csv(scene, b));
 }
 
-TEST(SweepSummary, SummaryCellsAreSummaryCsvRows) {
+TEST(CsvExport, SummaryCellsAreSummaryCsvRows) {
   Scene scene;
   Evaluation e;
   e.summary.scene = "hand";

@@ -60,13 +60,13 @@ std::string value_error(const Probe& p) {
   return "";
 }
 
-TEST(SettingsKey, HelpIsChoicesUnitAndMeaning) {
+TEST(Key, HelpIsChoicesUnitAndMeaning) {
   EXPECT_EQ(key("length_m").help, "m; how long");
   EXPECT_EQ(key("count").help, "how many");
   EXPECT_EQ(key("mode").help, "slow | fast; how fast");
 }
 
-TEST(SettingsKey, TextOutOfRangeNamesPlaceKeyValueAndRule) {
+TEST(Key, TextOutOfRangeNamesPlaceKeyValueAndRule) {
   EXPECT_EQ(text_error("length_m", "12"), "probe.ini:4: length_m = '12': must be in (0, 10]");
   EXPECT_EQ(text_error("length_m", " 0 "), "probe.ini:4: length_m = '0': must be in (0, 10]");
   EXPECT_EQ(text_error("count", "9"), "probe.ini:4: count = '9': must be a whole number in [1, 5]");
@@ -79,7 +79,7 @@ TEST(SettingsKey, TextOutOfRangeNamesPlaceKeyValueAndRule) {
   EXPECT_EQ(text_error("rate_hz", "inf"), "");
 }
 
-TEST(SettingsKey, NonFiniteTextIsRefused) {
+TEST(Key, NonFiniteTextIsRefused) {
   for (const char* t : {"nan", "inf", "-inf"}) {
     EXPECT_EQ(text_error("length_m", t),
               std::string("probe.ini:4: length_m = '") + t + "': must be finite");
@@ -94,7 +94,7 @@ TEST(SettingsKey, NonFiniteTextIsRefused) {
 
 // Every spelling strtod takes for +infinity (C11 7.22.1.3: INF or INFINITY, ignoring case, with
 // an optional sign) is a key's inf.
-TEST(SettingsKey, InfinityInEverySpellingStrtodAccepts) {
+TEST(Key, InfinityInEverySpellingStrtodAccepts) {
   for (const char* t : {"inf", "Inf", "INF", "infinity", "Infinity", "INFINITY", "iNfInItY", "+inf",
                         "+Infinity", " inf "}) {
     EXPECT_EQ(text_error("rate_hz", t), "") << t;
@@ -103,11 +103,11 @@ TEST(SettingsKey, InfinityInEverySpellingStrtodAccepts) {
   EXPECT_EQ(text_error("rate_hz", "++inf"), "probe.ini:4: rate_hz = '++inf': not a number");
 }
 
-TEST(SettingsKey, BadChoiceListsTheChoices) {
+TEST(Key, BadChoiceListsTheChoices) {
   EXPECT_EQ(text_error("mode", "quick"), "probe.ini:4: mode = 'quick': expected slow | fast");
 }
 
-TEST(SettingsKey, ValueSetInCodeIsCheckedByTheSameRule) {
+TEST(Key, ValueSetInCodeIsCheckedByTheSameRule) {
   EXPECT_EQ(value_error(Probe{}), "");
   Probe p;
   p.length_m = 12.0;
@@ -131,7 +131,7 @@ TEST(SettingsKey, ValueSetInCodeIsCheckedByTheSameRule) {
   EXPECT_EQ(value_error(p), "offset_m = 0 inf 0: each component must be finite");
 }
 
-TEST(SettingsKey, FormatReadsBackAsTheSameValue) {
+TEST(Key, FormatReadsBackAsTheSameValue) {
   Probe p;
   p.length_m = 1.0 / 3.0;
   p.rate_hz = std::numeric_limits<double>::infinity();
@@ -147,7 +147,7 @@ TEST(SettingsKey, FormatReadsBackAsTheSameValue) {
   EXPECT_EQ(back.offset_m, p.offset_m);
 }
 
-TEST(SettingsKey, SectionNamesTheKeyAndReachesTheMember) {
+TEST(Key, SectionNamesTheKeyAndReachesTheMember) {
   struct Outer {
     Probe probe;
   };

@@ -170,7 +170,7 @@ std::optional<std::string> coverage_of(const std::string& rows,
                                 time, "t.csv");
 }
 
-TEST(CameraTrackCoverage, EachTrackThatMissesTheRunIsNamed) {
+TEST(CameraTrackFile, EachTrackThatMissesTheRunIsNamed) {
   // Engine-clock times: 73.2 to 76.2 s.
   const std::string engine = "73.2,0,1,0,0,0,-1,0,1,0\n76.2,0,1,-3,0,0,-1,0,1,0\n";
   EXPECT_EQ(coverage_of(engine),
@@ -198,7 +198,7 @@ TEST(CameraTrackCoverage, EachTrackThatMissesTheRunIsNamed) {
   EXPECT_EQ(coverage_of(engine, TrackTime::kFromFirstSample), std::nullopt);
 }
 
-TEST(CameraTrackCoverage, FromFirstSampleShiftsTimesOnly) {
+TEST(CameraTrackFile, FromFirstSampleShiftsTimesOnly) {
   CameraTrackReading reading;
   reading.max_speed_mps = 3.0;
   reading.time = TrackTime::kFromFirstSample;
@@ -212,7 +212,7 @@ TEST(CameraTrackCoverage, FromFirstSampleShiftsTimesOnly) {
 
 // The scene names the key, warns on loading (what the CLI prints on stderr) and in the text
 // table's header; the CSV has no room for it and stays as it was.
-TEST(CameraTrackCoverage, SceneWarnsAndTheTableHeaderSaysSo) {
+TEST(CameraTrackFile, SceneWarnsAndTheTableHeaderSaysSo) {
   const std::string path = ::testing::TempDir() + "/engine_clock.csv";
   std::ofstream(path) << kHeader << "\n73.2,0,1,0,0,0,-1,0,1,0\n73.7,0,1,-1,0,0,-1,0,1,0\n";
   std::vector<std::string> warnings;

@@ -1,14 +1,12 @@
 // The explosion over the pieces: grid scenes exactly as before pieces existed, Voronoi and mesh
-// pieces placed at their centres of mass, the object keys and their errors.
+// pieces placed at their centres of mass, the object keys and their errors. A scene's mesh file
+// found beside it is in scene_file_mesh_test.cpp.
 
 #include "sim/explosion.hpp"
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include "debris/mesh_file.hpp"
 #include "sim/camera_motion.hpp"
@@ -17,8 +15,6 @@
 
 namespace fragsim {
 namespace {
-
-namespace fs = std::filesystem;
 
 Eigen::Vector3d unit_ball(Random& rng) {
   for (;;) {
@@ -99,49 +95,6 @@ TEST(Explosion, VoronoiPiecesFlyFromTheirCentresOfMass) {
   }
   // The cube's mass less the gap's share: 600 kg/m^3 * 1.2^3 m^3 * 0.98^3.
   EXPECT_NEAR(mass_kg, 600.0 * std::pow(1.2, 3) * std::pow(0.98, 3), 1e-9);
-}
-
-class MeshScene : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("fragsim_mesh_scene_" + std::to_string(::getpid()));
-    fs::create_directories(dir_ / "scenes");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
-};
-
-TEST_F(MeshScene, RelativeMeshFileIsTakenFromTheSceneFilesFolder) {
-  Scene cells = parse_scene("[object]\npattern = voronoi\npieces = 20\n", "cells.ini");
-  write_pieces(scene_pieces(cells), (dir_ / "scenes" / "cells.obj").string());
-  const std::string scene_path = (dir_ / "scenes" / "mesh.ini").string();
-  std::ofstream(scene_path) << "[object]\nmesh_file = cells.obj\n";
-  const Scene s = load_scene(scene_path);
-  EXPECT_EQ(s.object.mesh_file, (dir_ / "scenes" / "cells.obj").string());
-  ASSERT_NE(s.object.mesh_pieces, nullptr);
-  EXPECT_EQ(s.fragment_count(), 20);
-  const auto a = scene_pieces(cells);
-  const auto b = scene_pieces(s);
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_NEAR((a[i].centre_m - b[i].centre_m).norm(), 0.0, 1e-12);
-  }
-  // The resolved scene reads back to the same file from anywhere.
-  const Scene again = parse_scene(scene_to_ini(s), "elsewhere/config.ini");
-  EXPECT_EQ(again.object.mesh_file, s.object.mesh_file);
-}
-
-TEST_F(MeshScene, BadMeshFileNamesTheKey) {
-  const std::string scene_path = (dir_ / "scenes" / "bad.ini").string();
-  std::ofstream(scene_path) << "[object]\nmesh_file = nowhere.glb\n";
-  try {
-    load_scene(scene_path);
-    FAIL() << "no error";
-  } catch (const SceneError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("nowhere.glb"), std::string::npos) << m;
-    EXPECT_NE(m.find("(object.mesh_file)"), std::string::npos) << m;
-    EXPECT_EQ(m.find('\n'), std::string::npos) << m;
-  }
 }
 
 TEST(Explosion, ObjectKeysAreChecked) {

@@ -1,6 +1,7 @@
 // The `fade` strategy: its opacity ramp worked by hand, the distance to a box's nearest point,
-// the next frame's prediction, its keys' rules, and whole runs of one fragment fired at the lens
-// and one passing beside it (hand-placed scenes of support/test_scenes.hpp).
+// the next frame's prediction, and whole runs of one fragment fired at the lens and one passing
+// beside it (hand-placed scenes of support/test_scenes.hpp). Its keys' rules are in
+// fade_params_test.cpp.
 
 #include "strategies/fade_strategy.hpp"
 
@@ -25,7 +26,7 @@ FragmentState box_at(const Eigen::Vector3d& p, double half_m = 0.05) {
 }
 
 // The defaults: opaque from 1 m out, invisible from 0.25 m in.
-TEST(FadeOpacity, OneAtStartZeroAtEndLinearBetween) {
+TEST(FadeStrategy, OneAtStartZeroAtEndLinearBetween) {
   const FadeParams p;
   ASSERT_EQ(p.start_m, 1.0);
   ASSERT_EQ(p.end_m, 0.25);
@@ -46,7 +47,7 @@ TEST(FadeOpacity, OneAtStartZeroAtEndLinearBetween) {
   }
 }
 
-TEST(FadeDistance, NearestPointOfTheBox) {
+TEST(FadeStrategy, NearestPointOfTheBox) {
   const Eigen::Vector3d eye(0.0, 0.0, 0.0);
   // Face on: the near face is 1 - 0.05 away.
   EXPECT_NEAR(box_distance_m(eye, box_at({0.0, 0.0, -1.0})), 0.95, 1e-15);
@@ -79,32 +80,6 @@ TEST(FadeStrategy, AnswersTheNextFramesOpacityAndNoForce) {
   // Next frame: the near face at -0.95, the eye at -0.1: 0.85 m, opacity (0.85 - 0.25) / 0.75.
   EXPECT_NEAR(out.opacity[0], 0.8, 1e-6);
   EXPECT_EQ(out.opacity[1], 1.0f);
-}
-
-TEST(FadeParams, EndMustBeNearerThanStartAndEachKeyInRange) {
-  Scene scene;
-  const auto error = [&scene]() -> std::string {
-    try {
-      make_strategy("fade", scene);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
-  };
-  EXPECT_EQ(error(), "");
-  scene.strategies.get<FadeParams>().end_m = 1.0;  // equal to start_m: no ramp
-  EXPECT_NE(error().find("fade.end_m = 1: must be < fade.start_m = 1"), std::string::npos)
-      << error();
-  scene.strategies.get<FadeParams>().end_m = 2.0;
-  EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.strategies.get<FadeParams>().end_m = -0.1;
-  EXPECT_NE(error().find("fade.end_m"), std::string::npos) << error();
-  scene.strategies.get<FadeParams>().end_m = 0.0;  // invisible only at the eye: allowed
-  EXPECT_EQ(error(), "");
-  scene.strategies.get<FadeParams>().start_m = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
-  scene.strategies.get<FadeParams>().start_m = 0.0;
-  EXPECT_NE(error().find("fade.start_m"), std::string::npos) << error();
 }
 
 // Each snapshot's opacities.

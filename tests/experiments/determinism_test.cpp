@@ -1,10 +1,14 @@
-// Determinism: the shipped scenes' summary.csv, pinned by hash. The comparison's own behaviour is
-// tested in evaluation_test.cpp, its CSV files in tests/report/csv_export_test.cpp.
+// Determinism: the shipped scenes' summary.csv, pinned by hash, and the same bytes written by two
+// processes of the fragsim executable. The comparison's own behaviour is tested in
+// evaluation_test.cpp, its CSV files in tests/report/csv_export_test.cpp.
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +16,7 @@
 #include "experiments/evaluation.hpp"
 #include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
+#include "support/run_fragsim.hpp"
 
 namespace fragsim {
 namespace {
@@ -148,6 +153,43 @@ TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
             0x7ce12e61cc298ed1ull)
       << csv;
   EXPECT_EQ(fnv1a(csv), 0x8a80feaf22367510ull) << csv;
+}
+
+// ---- Two processes of the executable. ----
+
+namespace fs = std::filesystem;
+using fragsim::test::UniqueDir;
+
+int shell(const std::string& cmd) {
+  const int raw = std::system(cmd.c_str());
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+}
+
+std::string read_all(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string kBin = FRAGSIM_BINARY;
+const std::string kScenes = std::string(FRAGSIM_DATA_DIR) + "/scenes/";
+
+TEST(Determinism, TwoProcessesWriteTheSameBytes) {
+  const UniqueDir tmp("fragsim_det");
+  const fs::path a = tmp.path() / "a";
+  const fs::path b = tmp.path() / "b";
+  for (const fs::path& d : {a, b}) {
+    ASSERT_EQ(shell(kBin + " compare --scene " + kScenes + "thesis125.ini --trajectories --csv " +
+                    d.string() + " >/dev/null"),
+              0);
+  }
+  for (const char* f :
+       {"summary.csv", "steps.csv", "camera.csv", "trajectories.csv", "config.ini"}) {
+    const std::string bytes = read_all(a / f);
+    EXPECT_FALSE(bytes.empty()) << f;
+    EXPECT_EQ(bytes, read_all(b / f)) << f;
+  }
 }
 
 }  // namespace
