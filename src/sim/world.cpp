@@ -19,6 +19,7 @@
 #include "io/input_error.hpp"
 #include "io/number_format.hpp"
 #include "sim/body_snapshot.hpp"
+#include "sim/face_manifold.hpp"
 #include "sim/ground_sweep.hpp"
 #include "sim/world_probe.hpp"
 
@@ -176,23 +177,10 @@ OdeHull to_ode(const ConvexShape& shape) {
   return h;
 }
 
-// A hull in the world frame: what the convex contact manifold below works on.
-struct WorldHull {
-  std::vector<Eigen::Vector3d> vertices_m;
-  const std::vector<std::vector<int>>* faces = nullptr;  // the body frame's, same indices
-  std::vector<Eigen::Vector3d> normals;
-  std::vector<double> offsets_m;
-
-  // The face whose outward normal is closest to `direction`, and that cosine.
-  std::pair<std::size_t, double> facing(const Eigen::Vector3d& direction) const {
-    std::pair<std::size_t, double> best{0, -INFINITY};
-    for (std::size_t f = 0; f < normals.size(); ++f) {
-      const double c = normals[f].dot(direction);
-      if (c > best.second) best = {f, c};
-    }
-    return best;
-  }
-};
+Eigen::Vector3d geom_position(dGeomID g) {
+  const dReal* p = dGeomGetPosition(g);
+  return Eigen::Vector3d(p[0], p[1], p[2]);
+}
 
 Eigen::Matrix3d geom_rotation(dGeomID g) {
   const dReal* r = dGeomGetRotation(g);
@@ -201,67 +189,14 @@ Eigen::Matrix3d geom_rotation(dGeomID g) {
   return m;
 }
 
-// `vertices_m`, `normals` and `offsets_m` in the body frame of geom g, moved to the world.
-WorldHull place_hull(dGeomID g, const std::vector<Eigen::Vector3d>& vertices_m,
-                     const std::vector<std::vector<int>>& faces,
-                     const std::vector<Eigen::Vector3d>& normals,
-                     const std::vector<double>& offsets_m) {
-  const dReal* p = dGeomGetPosition(g);
-  const Eigen::Vector3d pos(p[0], p[1], p[2]);
-  const Eigen::Matrix3d rot = geom_rotation(g);
-  WorldHull h;
-  h.faces = &faces;
-  h.vertices_m.reserve(vertices_m.size());
-  for (const Eigen::Vector3d& v : vertices_m) h.vertices_m.push_back(pos + rot * v);
-  h.normals.reserve(normals.size());
-  h.offsets_m.reserve(normals.size());
-  for (std::size_t k = 0; k < normals.size(); ++k) {
-    const Eigen::Vector3d n = rot * normals[k];
-    h.normals.push_back(n);
-    h.offsets_m.push_back(offsets_m[k] + n.dot(pos));
-  }
-  return h;
-}
-
-// A box's corners (bit 0: +x, bit 1: +y, bit 2: +z) and faces, counter-clockwise from outside,
-// normals +x, -x, +y, -y, +z, -z.
-const std::vector<std::vector<int>>& box_faces() {
-  static const std::vector<std::vector<int>> faces = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
-                                                      {0, 1, 5, 4}, {4, 5, 7, 6}, {0, 2, 3, 1}};
-  return faces;
-}
-
-WorldHull place_box(dGeomID g, const Eigen::Vector3d& half_m) {
-  std::vector<Eigen::Vector3d> vertices;
-  for (int i = 0; i < 8; ++i) {
-    vertices.emplace_back((i & 1) ? half_m.x() : -half_m.x(), (i & 2) ? half_m.y() : -half_m.y(),
-                          (i & 4) ? half_m.z() : -half_m.z());
-  }
-  std::vector<Eigen::Vector3d> normals;
-  std::vector<double> offsets;
-  for (int a = 0; a < 3; ++a) {
-    for (double sign : {1.0, -1.0}) {
-      normals.push_back(sign * Eigen::Vector3d::Unit(a));
-      offsets.push_back(half_m[a]);
-    }
-  }
-  return place_hull(g, vertices, box_faces(), normals, offsets);
-}
-
-// Below this cosine between the contact normal and the best face normal, the contact is an edge
-// or a corner, not a face, and one point is right.
-constexpr double kFaceContactCos = 0.7;
-
 // Contacts between convex a (g1) and convex-or-box b (g2). Debian's ODE 0.16 is built with libccd,
 // so its dispatch sends convex-box and convex-convex to libccd's MPR, which finds overlap, normal
 // and depth well but returns one point: a piece resting on a box then pivots on that point and
 // spins on it for ever (a 0.1 m convex cube on a static box: 2.7 rad/s after 10 s, 12 mm sunk,
 // where the same cube on the plane, whose collider returns every vertex below it, rests at once).
-// So MPR's answer is the gate and the normal, and the points are a face manifold as box-box
-// colliders make it: the face of either hull that best faces the other along the normal is the
-// reference, the other hull's face most opposed to it is clipped to the reference face's sides,
-// and what lies below the reference plane is kept, that deep. An edge or corner contact (no face
-// turned to the normal, or nothing left after clipping) keeps MPR's one point.
+// So MPR's answer is the gate and the normal, and the points are the face manifold
+// (face_manifold.hpp). An edge or corner contact (no face turned to the normal, or nothing left
+// after clipping) keeps MPR's one point.
 int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& hb, int max_count,
                     dContactGeom* out, int skip) {
   dContactGeom mpr{};
@@ -269,66 +204,20 @@ int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& 
   auto* bytes = reinterpret_cast<char*>(out);
   auto at = [&](int i) { return reinterpret_cast<dContactGeom*>(bytes + i * skip); };
   // ODE's normal points from g2 into g1.
-  const Eigen::Vector3d n(mpr.normal[0], mpr.normal[1], mpr.normal[2]);
-  const auto [face_b, cos_b] = hb.facing(n);
-  const auto [face_a, cos_a] = ha.facing(-n);
-  const bool b_refers = cos_b >= cos_a;
-  if (std::max(cos_a, cos_b) < kFaceContactCos) {
+  const FaceManifold face =
+      face_manifold(ha, hb, Eigen::Vector3d(mpr.normal[0], mpr.normal[1], mpr.normal[2]));
+  if (face.points.empty()) {
     *at(0) = mpr;
     return 1;
   }
-  const WorldHull& ref = b_refers ? hb : ha;
-  const WorldHull& inc = b_refers ? ha : hb;
-  const std::size_t rf = b_refers ? face_b : face_a;
-  const Eigen::Vector3d& ref_normal = ref.normals[rf];
-  const std::vector<int>& inc_face = (*inc.faces)[inc.facing(-ref_normal).first];
-  std::vector<Eigen::Vector3d> poly;
-  for (int v : inc_face) poly.push_back(inc.vertices_m[static_cast<std::size_t>(v)]);
-  const std::vector<int>& ref_face = (*ref.faces)[rf];
-  std::vector<Eigen::Vector3d> clipped;
-  for (std::size_t e = 0; e < ref_face.size() && !poly.empty(); ++e) {
-    const Eigen::Vector3d& p = ref.vertices_m[static_cast<std::size_t>(ref_face[e])];
-    const Eigen::Vector3d& q =
-        ref.vertices_m[static_cast<std::size_t>(ref_face[(e + 1) % ref_face.size()])];
-    // Counter-clockwise about the outward normal: (q - p) x normal points out of the face.
-    const Eigen::Vector3d side = (q - p).cross(ref_normal);
-    clipped.clear();
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-      const Eigen::Vector3d& x = poly[i];
-      const Eigen::Vector3d& y = poly[(i + 1) % poly.size()];
-      const double dx = side.dot(x - p);
-      const double dy = side.dot(y - p);
-      if (dx <= 0.0) clipped.push_back(x);
-      if ((dx < 0.0 && dy > 0.0) || (dx > 0.0 && dy < 0.0)) {
-        clipped.push_back(x + dx / (dx - dy) * (y - x));
-      }
-    }
-    std::swap(poly, clipped);
-  }
-  struct Point {
-    Eigen::Vector3d position_m;
-    double depth_m;
-  };
-  std::vector<Point> points;
-  for (const Eigen::Vector3d& x : poly) {
-    const double depth = ref.offsets_m[rf] - ref_normal.dot(x);
-    if (depth > 0.0) points.push_back({x, depth});
-  }
-  if (points.empty()) {
-    *at(0) = mpr;
-    return 1;
-  }
-  std::stable_sort(points.begin(), points.end(),
-                   [](const Point& p, const Point& q) { return p.depth_m > q.depth_m; });
-  const Eigen::Vector3d normal = b_refers ? ref_normal : Eigen::Vector3d(-ref_normal);
-  const int count = std::min(static_cast<int>(points.size()), max_count);
+  const int count = std::min(static_cast<int>(face.points.size()), max_count);
   for (int i = 0; i < count; ++i) {
     dContactGeom& c = *at(i);
     c = mpr;
-    const Point& p = points[static_cast<std::size_t>(i)];
+    const ManifoldPoint& p = face.points[static_cast<std::size_t>(i)];
     for (int k = 0; k < 3; ++k) {
       c.pos[k] = p.position_m[k];
-      c.normal[k] = normal[k];
+      c.normal[k] = face.normal[k];
     }
     c.depth = p.depth_m;
   }
@@ -534,13 +423,17 @@ struct World::Impl {
   }
 
   WorldHull hull_of(dGeomID g, const GeomTag* t) const {
+    const Eigen::Vector3d position_m = geom_position(g);
+    const Eigen::Matrix3d rotation = geom_rotation(g);
     if (const ConvexShape* s = shape_of(t)) {
-      return place_hull(g, s->vertices_m, s->faces, s->normals, s->offsets_m);
+      return place_hull(position_m, rotation, s->vertices_m, s->faces, s->normals, s->offsets_m);
     }
     if (t->kind == GeomKind::kWall) {
-      return place_box(g, 0.5 * Eigen::Vector3d(wall->width_m, wall->height_m, wall->thickness_m));
+      return place_box(position_m, rotation,
+                       0.5 * Eigen::Vector3d(wall->width_m, wall->height_m, wall->thickness_m));
     }
-    return place_box(g, constant[static_cast<std::size_t>(t->fragment)].half_extents_m);
+    return place_box(position_m, rotation,
+                     constant[static_cast<std::size_t>(t->fragment)].half_extents_m);
   }
 
   // The contacts of fragment geom a with b, at most max_count. Boxes, the ground plane (ODE's

@@ -578,9 +578,6 @@ MIRROR_UNTESTED = {
 MIRROR_SUITES = {
     "tests/control/controller_test.cpp": "suite ControlApi: renamed with the split of the "
                                          "controller's step, which moves these tests",
-    "tests/strategies/cheap_rejection_test.cpp": "a suite per shape (BallRejection, BoxRejection, "
-                                                 "TwoBoxRejection): renamed with the split of "
-                                                 "cheap_rejection.cpp, which moves these tests",
     "tests/sim/world_convex_test.cpp": "WorldConvexPairs, ConvexShapes: renamed with the split of "
                                        "world.cpp's contact manifold",
     "tests/sim/world_skip_test.cpp": "AutoDisable, CullResting, SkipKeys: renamed with the split "

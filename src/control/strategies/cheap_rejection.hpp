@@ -1,263 +1,229 @@
 #pragma once
-// Cheap, conservative tests that settle, before any root solve, that a fragment's ballistic path
-// cannot meet a region: the camera's reachable ball (`edge`, docs/method.md section 3) or the
-// protected box (`edge-min`, section 4). They only ever answer "certainly clear"; anything in
-// doubt goes on to the exact solve, so the strategies' results do not change. Each keeps a margin
-// far beyond the root solver's rounding (first_root.hpp judges "touching" within ~1e-15 of the
-// terms' size): a path these call clear, the exact solve also finds clear.
+// The cheap rejection: conservative tests that settle, before any root solve, that a fragment's
+// ballistic path cannot meet a region: the camera's reachable ball (`edge`, docs/method.md section
+// 3; ball_clearance.hpp), a box (box_clearance.hpp), and edge-min's protected and grown boxes in
+// one pass (`edge-min`, section 4; two_box_clearance.hpp). They only ever answer "certainly
+// clear"; anything in doubt goes on to the exact solve, so the strategies' results do not change.
+// Each keeps a margin far beyond the root solver's rounding (first_root.hpp judges "touching"
+// within ~1e-15 of the terms' size): a path these call clear, the exact solve also finds clear.
 //
-// Each test comes twice: for one path, and batched (BallClearance, BoxClearance) with the same
-// answers, as passes over many paths two at a time without a branch on the data inside a pass,
-// so the processor overlaps paths instead of waiting on each one's latency chain.
+// Each test comes twice: for one path, and batched with the same answers, as passes over many
+// paths two (or four) at a time without a branch on the data inside a pass, so the processor
+// overlaps paths instead of waiting on each one's latency chain.
+//
+// Here is what their implementations share: a few lane helpers, and the box test in lanes, which
+// both the box test and the two-box test run. Only ball_clearance.cpp, box_clearance.cpp and
+// two_box_clearance.cpp include it: it brings lane_ops.hpp, whose includers keep -Wpsabi off.
 
 #include <Eigen/Core>
-#include <array>
-#include <cstdint>
-#include <span>
-#include <vector>
+#include <cmath>
 
-#include "geometry/fragment_state.hpp"
-#include "geometry/parabola.hpp"
-#include "memory/memory_resource.hpp"
-#include "strategies/parallel_for.hpp"
+#include "strategies/lane_ops.hpp"
+#include "strategies/lanes.hpp"
 
-namespace fragsim {
+namespace fragsim::rejection {
 
-// The one-path tests take the path relative to the region's centre (Parabola::relative_to),
-// x(t) = d + v t + a t^2 with d = p0, v = v0 and a half its acceleration, for t in [0, t_end];
-// the batched ones take d and v per path and the half acceleration a (`a_mps2`) shared by all.
+using lanes::Lanes;
+using lanes::Mask;
 
-// True when |x(t)| > r0 + growth t for every t in [0, t_end]: the path certainly stays outside
-// the ball (fixed when growth = 0, growing otherwise). Q(t) = |x(t)|^2 - (r0 + growth t)^2 is a
-// quartic; its Bernstein coefficients on an interval bound it there (the convex hull property),
-// so all of them above the margin prove Q > 0. The whole interval first, then halves, quarters
-// and eighths of it (de Casteljau's subdivision), only where still in doubt. False when in doubt
-// (non-finite input, t_end < 0, a path that starts inside or is inside at a piece's end).
-bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, double t_end_s);
+[[gnu::always_inline]] inline Lanes l1(const Lanes (&x)[3]) {
+  return lanes::abs(x[0]) + lanes::abs(x[1]) + lanes::abs(x[2]);
+}
 
-// path_clears_ball for many paths under one acceleration and one growth.
-class BallClearance {
- public:
-  explicit BallClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
-  // Room for n paths, then each one set by index.
-  void resize(std::size_t n);
-  // Room for runs over up to n paths, set later by resize: such a run allocates nothing while at
-  // most two pieces per path stay in doubt.
-  void reserve(std::size_t n);
-  void set(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps, double r0_m,
-           double t_end_s) {
-    set_path(i, d_m, v_mps);
-    set_ball(i, r0_m, t_end_s);
+// In lanes of either width (Lanes, and the four-lane rejection's).
+template <class V>
+[[gnu::always_inline]] inline V dot(const V (&x)[3], const V (&y)[3]) {
+  return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+inline void broadcast3(const Eigen::Vector3d& x, Lanes (&out)[3]) {
+  for (int i = 0; i < 3; ++i) out[i] = lanes::broadcast(x[i]);
+}
+
+// ---- The box test -------------------------------------------------------------------------------
+
+// edge-min's two-box rejection runs the box test over every fragment, so it comes in two widths,
+// two lanes and (with AVX2) four: the same templates over lane_ops.hpp's NarrowOps and WideOps,
+// so the same answers, bit for bit, whatever the width.
+
+// The margin, relative to the path's extent and the box's size: the exact solves find the times a
+// coordinate meets a face to within ~1e-15 of those sizes (in the coordinate); 1e-6 is a
+// million times that, micrometres on a scene's metres.
+constexpr double kBoxMargin = 1e-6;
+
+// The acceleration (halved) shared by the paths of a box test, with the reciprocals its vertex
+// times and roots need: a multiplication instead of a division per path. The times come out
+// within an ulp or two of the quotients, far inside the margin. In lanes of either width.
+template <class O>
+struct BoxAccelOf {
+  using V = typename O::V;
+  V a[3];
+  // -1 / (2 a), or 0 where a = 0 (no vertex): the vertex's time per unit of velocity (the sign
+  // here, as c1 (-1 / (2 a)) is -c1 / (2 a) exactly, and a NaN's sign is never seen).
+  V minus_inv_2a[3];
+  V inv_a_z;       // 1 / a_z, or 0
+  bool curved[3];  // a != 0
+  V reach_m;       // |a|_1 t_end^2 + |lo|_1 + |hi|_1: the part of the margin's scale all share
+};
+using BoxAccel = BoxAccelOf<NarrowOps>;
+inline BoxAccel box_accel(const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
+                          const Eigen::Vector3d& hi_m, double t_end_s) {
+  BoxAccel acc;
+  double inv_2a[3];
+  for (int i = 0; i < 3; ++i) {
+    acc.a[i] = lanes::broadcast(a_mps2[i]);
+    acc.curved[i] = a_mps2[i] != 0.0;
+    inv_2a[i] = acc.curved[i] ? 1.0 / (2.0 * a_mps2[i]) : 0.0;
+    acc.minus_inv_2a[i] = lanes::broadcast(-inv_2a[i]);
   }
-  // The same in two parts, for a caller that knows the ball only after the path.
-  void set_path(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps) {
-    dx_[i] = d_m.x();
-    dy_[i] = d_m.y();
-    dz_[i] = d_m.z();
-    vx_[i] = v_mps.x();
-    vy_[i] = v_mps.y();
-    vz_[i] = v_mps.z();
+  acc.inv_a_z = lanes::broadcast(inv_2a[2]) + lanes::broadcast(inv_2a[2]);
+  acc.reach_m = lanes::broadcast(a_mps2.lpNorm<1>() * t_end_s * t_end_s + lo_m.lpNorm<1>() +
+                                 hi_m.lpNorm<1>());
+  return acc;
+}
+
+template <class O>
+[[gnu::always_inline]] inline typename O::V l1_of(const typename O::V (&x)[3]) {
+  return O::abs(x[0]) + O::abs(x[1]) + O::abs(x[2]);
+}
+
+template <class V>
+[[gnu::always_inline]] inline V at(V c0, V c1, V c2, V t) {
+  return c0 + t * (c1 + t * c2);
+}
+
+// Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1]: its range there (the ends,
+// and the vertex where it lies inside) misses the slab. `curved` says c2 != 0 (the same for all
+// paths: the acceleration's component), minus_inv_2c2 is -1 / (2 c2). kFromStart: t0 = 0, where the
+// value is c0 itself when c1 and c2 are finite (c0 + 0 (c1 + 0 c2) differs from it at most in a
+// zero's sign, which the comparisons below do not see); only for a caller whose answer is void
+// where they are not.
+template <class O, bool kFromStart = false, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M misses(V c0, V c1, V c2, V minus_inv_2c2, bool curved,
+                                                   V t0, V t1, V lo, V hi) {
+  const V f0 = kFromStart ? c0 : at(c0, c1, c2, t0);
+  const V f1 = at(c0, c1, c2, t1);
+  V low = O::min(f0, f1);
+  V high = O::max(f0, f1);
+  if (curved) {
+    const V ts = c1 * minus_inv_2c2;
+    const typename O::M vertex_inside = O::gt(ts, t0) & O::lt(ts, t1);
+    const V fv = O::select(vertex_inside, at(c0, c1, c2, ts), f0);
+    low = O::min(low, fv);
+    high = O::max(high, fv);
   }
-  void set_ball(std::size_t i, double r0_m, double t_end_s) {
-    r0_[i] = r0_m;
-    t_end_[i] = t_end_s;
+  return O::lt(high, lo) | O::gt(low, hi);
+}
+
+// Widens [first, last] to hold t where `ok` and 0 <= t <= t_end.
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline void include(typename O::M ok, V t, V t_end, V& first, V& last) {
+  const typename O::M in = ok & O::ge(t, V{}) & O::le(t, t_end);
+  first = O::select(in, O::min(first, t), first);
+  last = O::select(in, O::max(last, t), last);
+}
+
+// The box grown by `grow` and kept `tol` away: lo - grow - tol <= x(t) <= hi + grow + tol. Not
+// usable (never clear) when the margin or the interval is not a finite, non-negative number.
+template <class O>
+struct GrownBox {
+  typename O::V lo[3];
+  typename O::V hi[3];
+  typename O::M usable;
+};
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline GrownBox<O> grow_box(const V (&d)[3], const V (&v)[3],
+                                                   const V (&lo_m)[3], const V (&hi_m)[3], V grow,
+                                                   V t_end, V reach_m) {
+  // The scale bounds every coordinate's reach and the grown box's faces (|lo - grow| <= |lo| +
+  // grow).
+  const V scale = l1_of<O>(d) + l1_of<O>(v) * t_end + reach_m + 6.0 * O::abs(grow);
+  const V tol = kBoxMargin * scale;
+  GrownBox<O> box;
+  for (int i = 0; i < 3; ++i) {
+    box.lo[i] = lo_m[i] - grow - tol;
+    box.hi[i] = hi_m[i] + grow + tol;
   }
-  std::size_t size() const { return size_; }
-  // One flag per path, in order: 1 when it clears its ball. Valid until the next call.
-  std::span<const char> run(const Eigen::Vector3d& a_mps2, double growth_mps);
+  const V zero{};
+  box.usable = O::eq(tol - tol, zero) & O::ge(t_end, zero);
+  return box;
+}
 
- private:
-  // A piece of a path in doubt: the path and Q's five Bernstein coefficients on the piece.
-  struct Piece {
-    std::int32_t path;
-    double b[5];
-  };
-  std::size_t size_ = 0;
-  MemoryResource* mem_;
-  // Padded to whole lanes.
-  ResourceVector<double> dx_{mem_}, dy_{mem_}, dz_{mem_}, vx_{mem_}, vy_{mem_}, vz_{mem_},
-      r0_{mem_}, t_end_{mem_};
-  ResourceVector<double> tol_{mem_};
-  ResourceVector<char> clears_{mem_};
-  ResourceVector<Piece> pieces_{mem_};
-  ResourceVector<Piece> next_{mem_};
-};
+// The first stage: some coordinate stays outside its slab over the whole interval. Void where
+// the box is not usable: its scale then holds a non-finite d, v or a (the reach), so where it is
+// usable all three are finite, as misses<O, true> asks.
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_ranges_miss(const V (&d)[3], const V (&v)[3],
+                                                            const BoxAccelOf<O>& acc,
+                                                            const GrownBox<O>& box, V t_end) {
+  const V zero{};
+  typename O::M miss = misses<O, true>(d[0], v[0], acc.a[0], acc.minus_inv_2a[0], acc.curved[0],
+                                       zero, t_end, box.lo[0], box.hi[0]);
+  for (int i = 1; i < 3; ++i) {
+    miss = miss | misses<O, true>(d[i], v[i], acc.a[i], acc.minus_inv_2a[i], acc.curved[i], zero,
+                                  t_end, box.lo[i], box.hi[i]);
+  }
+  return miss;
+}
 
-// The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
-// three coordinates inside it: first each coordinate's range over the whole interval (ends and
-// vertex), then the x and y ranges over the times z is inside its slab. False when in doubt.
-bool path_clears_box(const Parabola& path, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
-                     double t_end_s);
+// The second stage: x or y stays outside its slab over the times z is inside its own. Those
+// times lie between the first and the last of: the ends of [0, t_end] where z is inside, and the
+// times z crosses a face (stable quadratic roots).
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_window_miss(const V (&d)[3], const V (&v)[3],
+                                                            const BoxAccelOf<O>& acc,
+                                                            const GrownBox<O>& box, V t_end) {
+  const V zero{};
+  V first = O::splat(INFINITY);
+  V last = O::splat(-INFINITY);
+  for (const V t : {zero, t_end}) {
+    const V z = at(d[2], v[2], acc.a[2], t);
+    include<O>(O::ge(z, box.lo[2]) & O::le(z, box.hi[2]), t, t_end, first, last);
+  }
+  const V a = acc.a[2];
+  const V b = v[2];
+  for (const V face : {box.lo[2], box.hi[2]}) {
+    const V c = d[2] - face;
+    if (!acc.curved[2]) {
+      include<O>(O::ne(b, zero), -c / b, t_end, first, last);
+      continue;
+    }
+    const V disc = b * b - 4.0 * a * c;
+    const V q = -0.5 * (b + O::copysign(O::sqrt(disc), b));
+    include<O>(O::ge(disc, zero), q * acc.inv_a_z, t_end, first, last);
+    include<O>(O::ge(disc, zero) & O::ne(q, zero), c / q, t_end, first, last);
+  }
+  const typename O::M window = O::le(first, last);
+  // x and y over that window, widened anyway: roots good to rounding, a multiplied reciprocal.
+  const V widen = kBoxMargin * t_end;
+  const V w0 = O::max(first - widen, zero);
+  const V w1 = O::min(last + widen, t_end);
+  typename O::M miss = O::none_of(window);
+  for (int i = 0; i < 2; ++i) {
+    miss = miss | (window & misses<O>(d[i], v[i], acc.a[i], acc.minus_inv_2a[i], acc.curved[i], w0,
+                                      w1, box.lo[i], box.hi[i]));
+  }
+  return miss;
+}
 
-// A moving frame for BoxClearance: paths given in world coordinates are seen from it, x along
-// axes[0], y along axes[1], z along axes[2] (a camera's right, up and forward).
-struct BoxFrame {
-  Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();
-  Eigen::Vector3d axes[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
-                             Eigen::Vector3d::UnitZ()};
-  Eigen::Vector3d velocity_mps = Eigen::Vector3d::Zero();
-};
+// Both stages: the box test for a lane's worth of paths at once, each over its own [0, t_end];
+// reach_m is |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
+// Lanes in `settled` (a bit each) are answered too, but the caller ignores them: the window's
+// roots only where the ranges left a path in doubt that matters, the same answers, cheaper.
+template <class O, class V = typename O::V>
+[[gnu::always_inline]] inline typename O::M box_clear(const V (&d)[3], const V (&v)[3],
+                                                      const BoxAccelOf<O>& acc, const V (&lo_m)[3],
+                                                      const V (&hi_m)[3], V grow, V t_end,
+                                                      V reach_m, int settled) {
+  const GrownBox<O> box = grow_box<O>(d, v, lo_m, hi_m, grow, t_end, reach_m);
+  const typename O::M by_ranges = box.usable & box_ranges_miss<O>(d, v, acc, box, t_end);
+  if ((O::bits(by_ranges) | settled) == (1 << O::kWidth) - 1) return by_ranges;
+  return by_ranges | (box.usable & box_window_miss<O>(d, v, acc, box, t_end));
+}
+[[gnu::always_inline]] inline Mask box_clear(const Lanes (&d)[3], const Lanes (&v)[3],
+                                             const BoxAccel& acc, const Lanes (&lo_m)[3],
+                                             const Lanes (&hi_m)[3], Lanes grow, Lanes t_end) {
+  return box_clear<NarrowOps>(d, v, acc, lo_m, hi_m, grow, t_end, acc.reach_m, 0);
+}
 
-// path_clears_box for many fragments, whose paths are given in world coordinates, seen from one
-// frame, under one acceleration (in the frame's axes), against one box grown per fragment by its
-// bounding radius, over one interval. A first stage (x's range alone) runs over every fragment,
-// straight from their states, the full test over those it left in doubt.
-class BoxClearance {
- public:
-  explicit BoxClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
-  // One flag per fragment: 1 when, in `frame`, its path x(t) = position + velocity t + a t^2
-  // clears lo - radius <= x(t) <= hi + radius. Valid until the next call.
-  std::span<const char> run(std::span<const FragmentState> fragments, const BoxFrame& frame,
-                            const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
-                            const Eigen::Vector3d& hi_m, double t_end_s);
-
- private:
-  MemoryResource* mem_;
-  ResourceVector<char> clears_{mem_};
-  ResourceVector<std::int32_t> doubt_{mem_};  // fragments the first stage left in doubt
-};
-
-// edge-min's whole rejection in one pass over the fragments: the protected box and, for the
-// robust camera models, the grown box, each over the fragment's own look-ahead rather than one
-// interval for all. A fragment's interval is edge-min's (EdgeMinStrategy::time_to_ground_s):
-// until its path y(t) = y + v_y t + half_gy t^2 comes down through ground + radius, within
-// [floor, cap]; computed here with the same operations in the same order, so the same number, and
-// a fragment at rest on the ground is examined for one step instead of the cap. The grown box's
-// interval is the smaller of that and the robust models' window.
-//
-// Two tiers. First, over every fragment, a distance bound in world coordinates (no change of
-// axes): a path that stays farther from the frame's origin than the box's farthest corner plus
-// the fragment's radius cannot touch the box (the argument is at its test in the .cpp). Then, for
-// the fragments it leaves in doubt, path_clears_box in the frame's axes for each box. Both only
-// ever answer "certainly clear".
-class TwoBoxClearance {
- public:
-  // The first tier four lanes wide where the processor has AVX2, else two (the same answers).
-  explicit TwoBoxClearance(MemoryResource* mem = default_memory_resource());
-  // For tests: the narrow lanes even where the wide ones are available (false).
-  void use_wide_lanes(bool wide);
-  struct Boxes {
-    BoxFrame frame;                                    // the protected box's frame
-    Eigen::Vector3d a_mps2 = Eigen::Vector3d::Zero();  // half the acceleration, in the frame's axes
-    Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
-    Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
-    // Each path's interval: max(min(time to the ground, cap), floor).
-    double cap_s = 0.0;
-    double floor_s = 0.0;
-    double ground_m = 0.0;      // -infinity: no ground
-    double half_gy_mps2 = 0.0;  // half the world acceleration's y (the ground's normal)
-    // The grown box: the protected box grown by grow_lo_m below lo and grow_hi_m above hi (per
-    // axis, each >= 0), seen from a frame with the protected box's origin and axes but velocity
-    // grown_velocity_mps, over at most window_s.
-    bool grown = false;
-    Eigen::Vector3d grown_velocity_mps = Eigen::Vector3d::Zero();
-    Eigen::Vector3d grow_lo_m = Eigen::Vector3d::Zero();
-    Eigen::Vector3d grow_hi_m = Eigen::Vector3d::Zero();
-    double window_s = 0.0;
-    // The window in `pieces` equal pieces (0: none), for the paths the whole window leaves in
-    // doubt: piece j covers [window_s j / pieces, window_s (j + 1) / pieces] and grows each side
-    // by piece_grow_*_m[j], at least the growth at the piece's end (the growth only increases
-    // with time). A path clear of each piece's box over that piece's times is clear of the
-    // grown box: the growth at the window's end is the most, and passing early it is far less.
-    static constexpr int kMaxPieces = 4;
-    int pieces = 0;
-    std::array<Eigen::Vector3d, kMaxPieces> piece_grow_lo_m{};
-    std::array<Eigen::Vector3d, kMaxPieces> piece_grow_hi_m{};
-  };
-  void run(std::span<const FragmentState> fragments, const Boxes& boxes);
-  // The same answers, the fragments cut into chunks of kChunk that run in ranges on `parallel`'s
-  // workers (on the calling thread when it is nullptr). Each chunk writes its own fragments'
-  // flags and its own slice of the unsettled list, which are joined in chunk order afterwards:
-  // every fragment's answer is its own, whatever its neighbours (the lanes' tests promise it),
-  // and a chunk starts on a whole group of four, so each fragment even goes through the same
-  // lanes as in run(). Allocates nothing after reserve() and set_workers() for as many workers
-  // as `parallel` has; it grows the work spaces on the calling thread otherwise.
-  void run(std::span<const FragmentState> fragments, const Boxes& boxes,
-           const ParallelFor* parallel);
-  // Fragments per chunk: a whole number of groups of four, and enough that a chunk's start (its
-  // second tier's constants) costs little beside it.
-  static constexpr std::int32_t kChunk = 512;
-  // Room for runs over up to n fragments: such a run allocates nothing.
-  void reserve(std::size_t n);
-  // A work space for each of `workers` chunks running at once (the run with a ParallelFor).
-  void set_workers(int workers);
-  // One flag per fragment: 1 when its path clears the protected box (clears), the grown box
-  // (grown_clears; all 1 without a grown box). Valid until the next run.
-  std::span<const char> clears() const { return {clears_.data(), size_}; }
-  std::span<const char> grown_clears() const { return {grown_clears_.data(), size_}; }
-  // The fragments not cleared of both, in increasing order.
-  std::span<const std::int32_t> unsettled() const { return {unsettled_.data(), unsettled_count_}; }
-  // The largest radius of the run's fragments (0 for none).
-  double max_radius_m() const { return max_radius_m_; }
-  // How many fragments the first tier left to the second.
-  std::size_t first_tier_doubts() const { return doubts_; }
-
-  // What one pass of both tiers over some fragments works in (all of them for run(), a chunk on
-  // one worker for the run with a ParallelFor). Public only for the .cpp's free functions.
-  struct WorkSpace {
-    explicit WorkSpace(MemoryResource* mem)
-        : doubt(mem),
-          groups(mem),
-          kept(mem),
-          verdicts(mem),
-          piece_rows(mem),
-          piece_lanes(mem),
-          unsettled(mem) {}
-    // Room for a pass over n fragments, every page touched (`unsettled` aside).
-    void reserve(std::size_t n);
-    // Sized for a pass over n fragments, within reserve()'s room after it (`unsettled` aside).
-    void size_for(std::size_t n);
-
-    ResourceVector<std::int32_t> doubt;   // fragments the first tier left in doubt
-    ResourceVector<std::int32_t> groups;  // groups of four with one in doubt (wide lanes)
-    // For each of those groups, what the first tier found, kept for the second rather than
-    // gathered and tested again: four lanes of each of its numbers (positions relative to the
-    // frame, velocities, radii, intervals), and which lanes it cleared of which box (then the
-    // second tier's verdict).
-    ResourceVector<double> kept;
-    ResourceVector<std::int32_t> verdicts;
-    // The lanes left for the grown box's pieces, packed into full groups of four: their numbers,
-    // row by row, and each one's group and lane.
-    ResourceVector<double> piece_rows;
-    ResourceVector<std::int32_t> piece_lanes;
-    // A chunk's unsettled fragments, before they go to the run's list (the chunked run's work
-    // spaces only: kChunk entries).
-    ResourceVector<std::int32_t> unsettled;
-    // Whether the next pass's first loop keeps them: the last pass left more than a few groups
-    // in doubt (at first yes, as an explosion's first step has all in doubt). It changes how fast
-    // a pass is, never what it answers.
-    bool keep_rows = true;
-  };
-
- private:
-  // What one chunk found besides its flags, for the join.
-  struct ChunkResult {
-    std::size_t unsettled = 0;
-    std::size_t doubts = 0;
-    double max_radius_m = 0.0;
-  };
-  // Sets the flags to "clear" and the counts to zero for a run over n fragments.
-  void start_run(std::size_t n);
-  // The chunks' unsettled slices, counts and radii joined in chunk order.
-  void join_chunks(std::size_t chunks);
-
-  std::size_t size_ = 0;
-  MemoryResource* mem_;
-  ResourceVector<char> clears_{mem_};
-  ResourceVector<char> grown_clears_{mem_};
-  [[maybe_unused]] bool wide_ = false;       // unused where there are no wide lanes
-  WorkSpace whole_{mem_};                    // run()'s, for every fragment at once
-  ResourceVector<WorkSpace> workers_{mem_};  // the chunked run's, one per worker
-  ResourceVector<ChunkResult> chunks_{mem_};
-  ResourceVector<std::int32_t> unsettled_{mem_};
-  std::size_t unsettled_count_ = 0;
-  std::size_t doubts_ = 0;
-  double max_radius_m_ = 0.0;
-};
-
-// The first tier's bound on the interval of one path (TwoBoxClearance::Boxes): at least
-// max(min(EdgeMinStrategy::time_to_ground_s(y, v_y, half_gy, ground_m), cap), floor). For tests.
-double interval_bound_s(double y_m, double vy_mps, double half_gy_mps2, double ground_m,
-                        double cap_s, double floor_s);
-
-}  // namespace fragsim
+}  // namespace fragsim::rejection

@@ -7,7 +7,6 @@
 #include "geometry/time_to_plane.hpp"
 #include "geometry/vec3_sums.hpp"
 #include "geometry/work_space.hpp"
-#include "strategies/cheap_rejection.hpp"
 #include "strategies/lanes.hpp"
 
 namespace fragsim {
@@ -54,7 +53,7 @@ BallSize ball_size(const ReachModel& model, double t_horizon_s) {
 
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                                   const ReachModel& model, double t_horizon_s) {
-  // Cheap rejection before any root solve (cheap_rejection.hpp): most paths that stay clear of
+  // Cheap rejection before any root solve (ball_clearance.hpp): most paths that stay clear of
   // the ball are settled by Q's Bernstein coefficients, with a margin the solve agrees with.
   const BallSize ball = ball_size(model, t_horizon_s);
   if (path_clears_ball(path.relative_to(camera_m), ball.r0_m, ball.growth_mps, t_horizon_s)) {

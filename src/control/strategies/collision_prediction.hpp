@@ -12,7 +12,7 @@
 #include "geometry/fragment_state.hpp"
 #include "geometry/parabola.hpp"
 #include "memory/memory_resource.hpp"
-#include "strategies/cheap_rejection.hpp"
+#include "strategies/ball_clearance.hpp"
 #include "strategies/edge_params.hpp"
 
 namespace fragsim {

@@ -473,7 +473,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
                         ctx.dt_s, horizon_s);
   };
 
-  // Cheap rejection of every fragment at once before any root solve (cheap_rejection.hpp): a path
+  // Cheap rejection of every fragment at once before any root solve (two_box_clearance.hpp): a path
   // that never has all three coordinates inside the box grown by the fragment's radius, with a
   // margin the solves below agree with, over the fragment's own look-ahead, is no threat; for the
   // robust models likewise the grown box over the window (section 4 of docs/camera_models.md).

@@ -46,10 +46,10 @@
 #include <vector>
 
 #include "memory/memory_resource.hpp"
-#include "strategies/cheap_rejection.hpp"
 #include "strategies/edge_min_params.hpp"
 #include "strategies/occlusion_bound.hpp"
 #include "strategies/strategy.hpp"
+#include "strategies/two_box_clearance.hpp"
 
 namespace fragsim {
 

@@ -4,7 +4,7 @@
 // extension in functions compiled for AVX2 (chosen at run time with has_wide_lanes()). Templates
 // over NarrowOps and WideOps perform the same IEEE operations in the same order at either width
 // (no FMA: -ffp-contract=off, and "avx2" does not enable it), so they give the same answers, bit
-// for bit. Used by edge-min's rejection (cheap_rejection.cpp) and its exact solve's slab times
+// for bit. Used by edge-min's rejection (two_box_clearance.cpp) and its exact solve's slab times
 // (slab_times.cpp).
 //
 // WideOps exists only where FRAGSIM_WIDE_LANES is defined: GCC on x86-64 (Clang refuses AVX

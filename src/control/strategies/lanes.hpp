@@ -1,6 +1,6 @@
 #pragma once
 // Two doubles computed together, for the batched passes of the cheap rejection
-// (cheap_rejection.cpp) and the prediction (collision_prediction.cpp). Why not plain loops: GCC
+// (cheap_rejection.hpp) and the prediction (collision_prediction.cpp). Why not plain loops: GCC
 // cannot vectorise a loop calling std::sqrt while math-errno is on (the default), and a branch
 // per fragment keeps the processor from overlapping fragments. Two lanes are one SSE2 register,
 // the x86-64 baseline; a wider vector changes the calling convention without AVX (-Wpsabi).
