@@ -227,10 +227,30 @@ void Controller::undo_carry_over(int cameras) {
   }
 }
 
-template <class Source, class Sink>
-fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
-                                const Sink& sink, fragsim_step_stats* stats) {
-  // Phase 1: checks and room. Nothing here changes the controller's state.
+// One step's numbers, passed from stage to stage: what it found of the fragments and their ids,
+// the cameras' contexts, and what the strategies answered.
+struct Controller::StepState {
+  int cameras = 0;
+  // The strategies' state is in the last step's frame, and for the last step's cameras: another
+  // normal, or another camera count, starts afresh.
+  bool new_frame = false;
+  std::size_t m = 0;  // the fragments usable this step
+  int skipped = 0;
+  int first_skipped = -1;
+  int below_ground = 0;
+  int first_below_ground = -1;
+  // The same ids as the last step, in the same order: no re-index.
+  bool same_ids = false;
+  int new_ids = 0;
+  int dropped_ids = 0;
+  std::array<StepContext, FRAGSIM_MAX_CAMERAS> contexts;
+  std::array<const StepOutput*, FRAGSIM_MAX_CAMERAS> outs{};
+  JointPush::Conflicts conflicts;
+  int pushed = 0;
+  int unprotected = 0;
+};
+
+fragsim_status Controller::check_input(const fragsim_step_input& in) {
   if (camera_count_ == 0) {
     return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
                        "cameras: none set: call fragsim_controller_set_cameras before the first "
@@ -244,15 +264,14 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
                        static_cast<int>(in.camera_count), camera_count_));
   }
   if (Failure f = validate_step_input(in)) return failed(f);
-  const int cameras = in.camera_count;
-  // The id table this step fills grows below, only if it must (a table grown here for nothing
-  // would cost the first call its page faults).
-  reserve_work(n);
-  const GroundFrame frame(in.ground_normal);
-  // The strategies' state is in the last step's frame, and for the last step's cameras: another
-  // normal, or another camera count, starts afresh (below).
-  const bool new_frame =
-      has_normal_ && (!same_bits(in.ground_normal, last_normal_) || cameras != last_cameras_);
+  return FRAGSIM_OK;
+}
+
+// The counts in locals while the loop runs: stored through this_step, they could alias the stores
+// of the ids, and the compiler would keep them in memory.
+template <class Source>
+void Controller::read_fragments(const fragsim_step_input& in, const Source& src, std::size_t n,
+                                const GroundFrame& frame, StepState& this_step) {
   std::size_t m = 0;
   int skipped = 0;
   int first_skipped = -1;
@@ -280,77 +299,96 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     ids_now_[m] = src.id(i);
     ++m;
   }
+  this_step.m = m;
+  this_step.skipped = skipped;
+  this_step.first_skipped = first_skipped;
+  this_step.below_ground = below_ground;
+  this_step.first_below_ground = first_below_ground;
+}
 
-  // Ids: the same list as the last step (the usual case, an engine passing its array every step)
+fragsim_status Controller::match_ids(StepState& this_step) {
+  const std::size_t m = this_step.m;
+  // The same list as the last step (the usual case, an engine passing its array every this_step)
   // needs neither the duplicate check nor a re-index: that step already passed both.
-  const bool same_ids = !new_frame && last_ids_.size() == m &&
-                        std::equal(last_ids_.begin(), last_ids_.end(), ids_now_.begin());
-  int new_ids = 0;
-  int dropped_ids = 0;
+  this_step.same_ids = !this_step.new_frame && last_ids_.size() == m &&
+                       std::equal(last_ids_.begin(), last_ids_.end(), ids_now_.begin());
+  if (this_step.same_ids) return FRAGSIM_OK;
   IdTable& now = ids_[1 - last_];
-  if (!same_ids) {
-    now.clear(m);
-    for (std::size_t k = 0; k < m; ++k) {
-      if (!now.insert(ids_now_[k], static_cast<std::int32_t>(k))) {
-        const auto first = static_cast<std::size_t>(now.find(ids_now_[k]));
-        return failed(
-            fail(FRAGSIM_ERROR_DUPLICATE_ID, "fragments[%d].id = %llu: the id of fragments[%d] too",
-                 static_cast<int>(caller_index_[k]), static_cast<unsigned long long>(ids_now_[k]),
-                 static_cast<int>(caller_index_[first])));
-      }
+  now.clear(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    if (!now.insert(ids_now_[k], static_cast<std::int32_t>(k))) {
+      const auto first = static_cast<std::size_t>(now.find(ids_now_[k]));
+      return failed(
+          fail(FRAGSIM_ERROR_DUPLICATE_ID, "fragments[%d].id = %llu: the id of fragments[%d] too",
+               static_cast<int>(caller_index_[k]), static_cast<unsigned long long>(ids_now_[k]),
+               static_cast<int>(caller_index_[first])));
     }
-    int kept = 0;
-    for (std::size_t k = 0; k < m; ++k) {
-      // A new frame: every fragment new, as after a reset (the state kept is in the old frame).
-      previous_[k] = new_frame ? -1 : ids_[last_].find(ids_now_[k]);
-      if (previous_[k] < 0) {
-        ++new_ids;
-      } else {
-        ++kept;
-      }
-    }
-    dropped_ids = static_cast<int>(last_ids_.size()) - kept;
   }
+  int new_ids = 0;
+  int kept = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    // A new frame: every fragment new, as after a reset (the state kept is in the old frame).
+    previous_[k] = this_step.new_frame ? -1 : ids_[last_].find(ids_now_[k]);
+    if (previous_[k] < 0) {
+      ++new_ids;
+    } else {
+      ++kept;
+    }
+  }
+  this_step.new_ids = new_ids;
+  this_step.dropped_ids = static_cast<int>(last_ids_.size()) - kept;
+  return FRAGSIM_OK;
+}
 
-  std::array<StepContext, FRAGSIM_MAX_CAMERAS> contexts;
-  std::array<const StepOutput*, FRAGSIM_MAX_CAMERAS> outs{};
-  for (int j = 0; j < cameras; ++j) {
+void Controller::make_contexts(const fragsim_step_input& in, const GroundFrame& frame,
+                               StepState& this_step) const {
+  for (int j = 0; j < this_step.cameras; ++j) {
     const auto k = static_cast<std::size_t>(j);
-    contexts[k] = context_for(in, slots_[k].def, in.camera_poses[j], frame, m);
-    outs[k] = &slots_[k].out;
+    this_step.contexts[k] = context_for(in, slots_[k].def, in.camera_poses[j], frame, this_step.m);
+    this_step.outs[k] = &slots_[k].out;
   }
+}
 
-  // Phase 2: the strategies, in the room made above.
-  const std::span<const int> previous(previous_.data(), m);
-  JointPush::Conflicts conflicts;
+void Controller::carry_over_ids(const StepState& this_step) {
+  const std::span<const int> previous(previous_.data(), this_step.m);
+  for (int j = 0; j < this_step.cameras; ++j) {
+    CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
+    // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
+    // frame resets it as reset() would (its failure below forgets everything too).
+    if (this_step.new_frame && !undo_safe_) slot.strategy->reset(0);
+    if (!this_step.same_ids && slot.edge != nullptr) slot.edge->carry_over(previous);
+    if (!this_step.same_ids && slot.edge_min != nullptr) slot.edge_min->carry_over(previous);
+  }
+}
+
+void Controller::ask_cameras(StepState& this_step) {
+  const int cameras = this_step.cameras;
+  for (int j = 0; j < cameras; ++j) {
+    CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
+    // One camera answers the step itself; several answer to the join below.
+    StepOutput& answer = cameras == 1 ? out_ : slot.out;
+    answer.clear();
+    slot.strategy->step(this_step.contexts[static_cast<std::size_t>(j)], answer);
+  }
+  if (cameras > 1) {
+    out_.clear();
+    this_step.conflicts = joint_.join(
+        std::span<const StepContext>(this_step.contexts.data(), this_step.contexts.size())
+            .first(static_cast<std::size_t>(cameras)),
+        std::span<const StepOutput* const>(this_step.outs.data(), this_step.outs.size())
+            .first(static_cast<std::size_t>(cameras)),
+        std::span<const FragmentState>(states_.data(), this_step.m), out_);
+  }
+}
+
+fragsim_status Controller::run_strategies(StepState& this_step) {
   tasks_.begin_step();
   try {
-    for (int j = 0; j < cameras; ++j) {
-      CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
-      // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
-      // frame resets it as reset() would (its failure below forgets everything too).
-      if (new_frame && !undo_safe_) slot.strategy->reset(0);
-      if (!same_ids && slot.edge != nullptr) slot.edge->carry_over(previous);
-      if (!same_ids && slot.edge_min != nullptr) slot.edge_min->carry_over(previous);
-    }
-    for (int j = 0; j < cameras; ++j) {
-      CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
-      // One camera answers the step itself; several answer to the join below.
-      StepOutput& answer = cameras == 1 ? out_ : slot.out;
-      answer.clear();
-      slot.strategy->step(contexts[static_cast<std::size_t>(j)], answer);
-    }
-    if (cameras > 1) {
-      out_.clear();
-      conflicts = joint_.join(std::span<const StepContext>(contexts.data(), contexts.size())
-                                  .first(static_cast<std::size_t>(cameras)),
-                              std::span<const StepOutput* const>(outs.data(), outs.size())
-                                  .first(static_cast<std::size_t>(cameras)),
-                              std::span<const FragmentState>(states_.data(), m), out_);
-    }
+    carry_over_ids(this_step);
+    ask_cameras(this_step);
   } catch (const std::bad_alloc&) {
     if (undo_safe_) {
-      if (!same_ids) undo_carry_over(cameras);
+      if (!this_step.same_ids) undo_carry_over(this_step.cameras);
       set_error("out of memory");
     } else {
       reset();
@@ -360,7 +398,10 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     }
     return FRAGSIM_ERROR_OUT_OF_MEMORY;
   }
+  return FRAGSIM_OK;
+}
 
+fragsim_status Controller::check_answer(const StepState& this_step) {
   if (parallel_ != nullptr && tasks_.broken()) {
     // The strategies' answer is incomplete and their state may hold parts of it.
     reset();
@@ -371,13 +412,20 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   }
   // Never a non-finite force out, whatever happened inside (the strategies already drop them).
   for (const AppliedForce& a : out_.forces) {
-    if (!a.force_N.allFinite() || a.fragment < 0 || static_cast<std::size_t>(a.fragment) >= m) {
+    if (!a.force_N.allFinite() || a.fragment < 0 ||
+        static_cast<std::size_t>(a.fragment) >= this_step.m) {
       // A bug: the strategy's state is not to be trusted after it, so nothing is kept.
       reset();
       set_error("internal: a strategy produced a non-finite force or a bad index");
       return FRAGSIM_ERROR_INTERNAL;
     }
   }
+  return FRAGSIM_OK;
+}
+
+template <class Sink>
+void Controller::write_forces(const GroundFrame& frame, std::size_t n, const Sink& sink,
+                              StepState& this_step) const {
   sink.zero(n);
   int pushed = 0;
   for (const AppliedForce& a : out_.forces) {
@@ -385,46 +433,88 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
     sink.set(static_cast<std::size_t>(caller_index_[k]), frame.out(a.force_N));
     if (!a.force_N.isZero(0.0)) ++pushed;
   }
+  this_step.pushed = pushed;
+}
+
+void Controller::remember_step(const fragsim_step_input& in, const StepState& this_step) {
+  if (!this_step.same_ids) {
+    last_ = 1 - last_;
+    last_ids_.assign(ids_now_.begin(), ids_now_.begin() + static_cast<std::ptrdiff_t>(this_step.m));
+  }
+  last_normal_ = in.ground_normal;
+  has_normal_ = true;
+  last_cameras_ = this_step.cameras;
+}
+
+int Controller::count_unprotected() const {
   int unprotected = 0;
   for (const int k : out_.activity.candidates) {
     if (states_[static_cast<std::size_t>(k)].mass_kg == 0.0) ++unprotected;
   }
-  if (!same_ids) {
-    last_ = 1 - last_;
-    last_ids_.assign(ids_now_.begin(), ids_now_.begin() + static_cast<std::ptrdiff_t>(m));
-  }
-  last_normal_ = in.ground_normal;
-  has_normal_ = true;
-  last_cameras_ = cameras;
+  return unprotected;
+}
+
+std::uint32_t Controller::warn(const fragsim_step_input& in, const StepState& this_step) {
   std::uint32_t warnings = 0;
-  if (below_ground > 0) warnings |= FRAGSIM_WARNING_BELOW_GROUND;
-  if (unprotected > 0) warnings |= FRAGSIM_WARNING_UNPROTECTED;
-  if (skipped > 0) warnings |= FRAGSIM_WARNING_SKIPPED;
-  for (int j = 0; j < cameras; ++j) {
+  if (this_step.below_ground > 0) warnings |= FRAGSIM_WARNING_BELOW_GROUND;
+  if (this_step.unprotected > 0) warnings |= FRAGSIM_WARNING_UNPROTECTED;
+  if (this_step.skipped > 0) warnings |= FRAGSIM_WARNING_SKIPPED;
+  for (int j = 0; j < this_step.cameras; ++j) {
     const fragsim_camera_def& c = slots_[static_cast<std::size_t>(j)].def;
     const std::uint32_t w = camera_warnings(c, in.camera_poses[j]) | warnings;
     if (w != 0) warn_once(w, c, in.camera_poses[j]);
     warnings |= w;
   }
-  if (stats != nullptr) {
-    stats->candidates = static_cast<std::int32_t>(out_.activity.candidates.size());
-    stats->pushed = pushed;
-    stats->capped = static_cast<std::int32_t>(out_.activity.capped.size());
-    stats->guarded = out_.activity.guarded;
-    stats->new_ids = new_ids;
-    stats->dropped_ids = dropped_ids;
-    stats->deferred = out_.activity.deferred;
-    stats->rejected_cheaply = out_.activity.rejected_cheaply;
-    stats->skipped = skipped;
-    stats->first_skipped = first_skipped;
-    stats->unprotected = unprotected;
-    stats->below_ground = below_ground;
-    stats->first_below_ground = first_below_ground;
-    stats->warnings = warnings;
-    stats->conflicts = conflicts.count;
-    stats->first_conflict =
-        conflicts.first < 0 ? -1 : caller_index_[static_cast<std::size_t>(conflicts.first)];
-  }
+  return warnings;
+}
+
+void Controller::write_stats(const StepState& this_step, std::uint32_t warnings,
+                             fragsim_step_stats& stats) const {
+  stats.candidates = static_cast<std::int32_t>(out_.activity.candidates.size());
+  stats.pushed = this_step.pushed;
+  stats.capped = static_cast<std::int32_t>(out_.activity.capped.size());
+  stats.guarded = out_.activity.guarded;
+  stats.new_ids = this_step.new_ids;
+  stats.dropped_ids = this_step.dropped_ids;
+  stats.deferred = out_.activity.deferred;
+  stats.rejected_cheaply = out_.activity.rejected_cheaply;
+  stats.skipped = this_step.skipped;
+  stats.first_skipped = this_step.first_skipped;
+  stats.unprotected = this_step.unprotected;
+  stats.below_ground = this_step.below_ground;
+  stats.first_below_ground = this_step.first_below_ground;
+  stats.warnings = warnings;
+  stats.conflicts = this_step.conflicts.count;
+  stats.first_conflict = this_step.conflicts.first < 0
+                             ? -1
+                             : caller_index_[static_cast<std::size_t>(this_step.conflicts.first)];
+}
+
+template <class Source, class Sink>
+fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
+                                const Sink& sink, fragsim_step_stats* stats) {
+  // Phase 1: checks and room. Nothing here changes the controller's state.
+  if (const fragsim_status status = check_input(in); status != FRAGSIM_OK) return status;
+  // The id table this step fills grows below, only if it must (a table grown here for nothing
+  // would cost the first call its page faults).
+  reserve_work(n);
+  const GroundFrame frame(in.ground_normal);
+  StepState this_step;
+  this_step.cameras = in.camera_count;
+  this_step.new_frame = has_normal_ && (!same_bits(in.ground_normal, last_normal_) ||
+                                        this_step.cameras != last_cameras_);
+  read_fragments(in, src, n, frame, this_step);
+  if (const fragsim_status status = match_ids(this_step); status != FRAGSIM_OK) return status;
+  make_contexts(in, frame, this_step);
+
+  // Phase 2: the strategies, in the room made above.
+  if (const fragsim_status status = run_strategies(this_step); status != FRAGSIM_OK) return status;
+  if (const fragsim_status status = check_answer(this_step); status != FRAGSIM_OK) return status;
+  write_forces(frame, n, sink, this_step);
+  remember_step(in, this_step);
+  this_step.unprotected = count_unprotected();
+  const std::uint32_t warnings = warn(in, this_step);
+  if (stats != nullptr) write_stats(this_step, warnings, *stats);
   clear_error();
   return FRAGSIM_OK;
 }

@@ -116,6 +116,38 @@ class Controller {
                           std::size_t m) const;
   void undo_carry_over(int cameras);
 
+  // The stages of step(), in order, and what they pass on (StepState, in the .cpp). Those that can
+  // fail set the error and return its status.
+  struct StepState;
+  // The cameras set and the step's input checked.
+  fragsim_status check_input(const fragsim_step_input& in);
+  // The usable fragments into states_ (in the strategies' frame), caller_index_ and ids_now_.
+  template <class Source>
+  void read_fragments(const fragsim_step_input& in, const Source& source, std::size_t n,
+                      const GroundFrame& frame, StepState& this_step);
+  // Which fragment of the last step each one was (previous_), refusing a duplicate id.
+  fragsim_status match_ids(StepState& this_step);
+  void make_contexts(const fragsim_step_input& in, const GroundFrame& frame,
+                     StepState& this_step) const;
+  // The strategies' state carried over to this step's ids, then each camera's strategy and their
+  // join; out of memory rolls the carry-over back, or forgets every fragment.
+  fragsim_status run_strategies(StepState& this_step);
+  void carry_over_ids(const StepState& this_step);
+  void ask_cameras(StepState& this_step);
+  // The answer refused, and every fragment forgotten, when the workers broke the task system's
+  // contract or a force is not finite.
+  fragsim_status check_answer(const StepState& this_step);
+  // The forces into the caller's places, back in the world's frame; the rest of the sink zeros.
+  template <class Sink>
+  void write_forces(const GroundFrame& frame, std::size_t n, const Sink& sink,
+                    StepState& this_step) const;
+  // The state the next step starts from: its ids, ground normal and camera count.
+  void remember_step(const fragsim_step_input& in, const StepState& this_step);
+  int count_unprotected() const;
+  std::uint32_t warn(const fragsim_step_input& in, const StepState& this_step);
+  void write_stats(const StepState& this_step, std::uint32_t warnings,
+                   fragsim_step_stats& stats) const;
+
   HookResource hook_;  // first: everything below is allocated from it
   MemoryResource* mem_ = &hook_;
   fragsim_controller_def def_;

@@ -342,6 +342,22 @@ std::size_t chosen(const std::array<double, 4>& need, const std::array<double, 4
   return best;
 }
 
+// One fragment's path as the exact solve sees it: in the camera's axes, relative to the camera
+// (d and w; x, y and z, each coordinate with half the gravity), the protected box grown by its
+// radius, its own look-ahead, and the constant model's answer: its way out and least push.
+struct PathInBox {
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  double own_horizon_s = 0.0;
+  Slabs slabs;
+  Coord x;
+  Coord y;
+  Coord z;
+  Nominal nominal;
+  std::size_t best = 0;
+  double a_nominal = 0.0;
+};
+
 }  // namespace
 
 double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half_gy_mps2,
@@ -424,61 +440,130 @@ double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
   return (declared >= 0.0 ? declared : params_.camera_turn_degps) * kPi / 180.0;
 }
 
-void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
-  const CameraPose& cam = ctx.camera;
+// One step's constants: the protected box about the eye, the look-ahead's bounds, the robust
+// models' regions, and after the rejection its answers; with the stages that read only these (the
+// exact solve of one fragment).
+struct EdgeMinStrategy::Step {
+  Step(const StepContext& context, const EdgeMinParams& edge_min, double assumed_accel_mps2,
+       double assumed_turn_radps, const std::array<double, 4>& weights, bool weights_differ);
+  Step(const Step&) = delete;
+  Step& operator=(const Step&) = delete;
+
+  const StepContext& ctx;
+  const CameraPose& cam;
+  const EdgeMinParams& params;
+  const std::array<double, 4>& way_weights;
+  bool weighted;
+  // The protected box, before the fragment's radius: lo_m <= x <= hi_m in the camera's axes.
+  double half_w_m = 0.0;
+  double half_h_m = 0.0;
+  double front_m = 0.0;
+  double back_m = 0.0;
+  Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
+  // The look-ahead: each fragment's own, until it reaches the ground, within the cap and the
+  // shot's end when known. The robust models' window is cut to it; the rejection bounds it.
+  double cap_s = 0.0;
+  double horizon_s = 0.0;
+  Eigen::Vector3d half_g = Eigen::Vector3d::Zero();  // half the gravity, in the camera's axes
+  // The robust models' regions (see the header).
+  bool robust = false;
+  bool ball_known = false;
+  bool use_accel = false;
+  Inflation accel_rho;
+  Inflation ball_rho;
+  // The narrower screen axis's half size and its sides' turn cap (both sides of x or y have the
+  // same one).
+  double half_min_m = 0.0;
+  double narrow_cap_m = 0.0;
+  // The ways out: +up, -up, +right, -right.
+  std::array<Eigen::Vector3d, 4> dir;
+  // The rejection's answers, and the grown box's look-ahead (robust models only).
+  std::span<const char> clears;
+  std::span<const char> grown_clears;
+  std::span<const std::int32_t> unsettled;
+  double look_s = 0.0;
+
+  // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
+  // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
+  const Inflation& reject_rho() const { return use_accel ? accel_rho : ball_rho; }
+  // The robust models' window for fragments of radius up to r_max_m (look_ahead_s).
+  double window_s(double r_max_m) const;
+  // The rejection's boxes, all but the grown box's window and growth (set_window).
+  TwoBoxClearance::Boxes rejection_boxes() const;
+  void set_window(TwoBoxClearance::Boxes& boxes, double r_max_m) const;
+  // In front of the box and moving away in depth, with gravity not pulling it back (the camera's
+  // forward axis tilted toward the ground can): no threat, without a solve.
+  bool receding(const Eigen::Vector3d& d, const Eigen::Vector3d& w, double r) const {
+    return d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
+  }
+  // Whether fragment i, left unsettled by the rejection, needs the exact solve.
+  bool needs_solve(std::size_t i) const;
+  // The exact solve of one fragment the rejections left in doubt: whether it is a candidate and
+  // the force it asks for, if any. It reads only the step's constants and the fragment, so
+  // fragments may be solved on any workers at once.
+  SolveAnswer solve(std::size_t i, bool grown_clear) const;
+  // The robust models' part of it: the worst case over the look-ahead window, and whether the
+  // constant model's push may wait a step.
+  SolveAnswer solve_worst_case(const FragmentState& f, const PathInBox& path,
+                               bool grown_clear) const;
+  // `answer` with a push of force_N.
+  static SolveAnswer pushed(SolveAnswer answer, const Eigen::Vector3d& force_N);
+  // A solve's answer into out: the candidate, then its force through the cap.
+  void emit(std::size_t i, const SolveAnswer& answer, StepOutput& out) const;
+};
+
+EdgeMinStrategy::Step::Step(const StepContext& context, const EdgeMinParams& edge_min,
+                            double assumed_accel_mps2, double assumed_turn_radps,
+                            const std::array<double, 4>& weights, bool weights_differ)
+    : ctx(context),
+      cam(context.camera),
+      params(edge_min),
+      way_weights(weights),
+      weighted(weights_differ),
+      dir{context.camera.up, -context.camera.up, context.camera.right, -context.camera.right} {
   const Eigen::Vector3d& body = ctx.camera_body_half_m;
-  const double half_w_m = std::max(cam.near_half_width_m(), body.x()) + params_.margin_m;
-  const double half_h_m = std::max(cam.near_half_height_m(), body.y()) + params_.margin_m;
-  const double front_m = std::max(cam.near_m, body.z()) + params_.margin_m;
-  const double back_m = body.z() + params_.margin_m;
-  // The look-ahead: each fragment's own, until it reaches the ground (below), within the cap and
-  // the shot's end when known. The robust models' window is cut to it; the rejection bounds it.
-  const double cap_s = std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s);
-  const double horizon_s = std::max(cap_s, ctx.dt_s);
-  const Eigen::Vector3d half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
-  const Eigen::Vector3d lo_m(-half_w_m, -half_h_m, -back_m);
-  const Eigen::Vector3d hi_m(half_w_m, half_h_m, front_m);
+  half_w_m = std::max(cam.near_half_width_m(), body.x()) + params.margin_m;
+  half_h_m = std::max(cam.near_half_height_m(), body.y()) + params.margin_m;
+  front_m = std::max(cam.near_m, body.z()) + params.margin_m;
+  back_m = body.z() + params.margin_m;
+  cap_s = std::min(params.horizon_cap_s, ctx.end_time_s - ctx.t_s);
+  horizon_s = std::max(cap_s, ctx.dt_s);
+  half_g = 0.5 * cam.dir_to_camera(ctx.gravity_mps2);
+  lo_m = Eigen::Vector3d(-half_w_m, -half_h_m, -back_m);
+  hi_m = Eigen::Vector3d(half_w_m, half_h_m, front_m);
 
   // The robust models' regions (see the header): about the constant-velocity path (bounded_accel)
   // and about the eye now (V_c; both models). Each side grows by the chord of the view's turn, at
   // most to the ball every orientation of the box lies in (Inflation), so any turn rate is safe.
-  const bool robust = params_.camera_model != CameraModel::kConstant;
+  robust = params.camera_model != CameraModel::kConstant;
   const double rot_m = norm3(Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)));
-  const double turn_radps = assumed_turn_radps(ctx);
   const std::array<double, 6> turn_cap_m = turn_caps_m(lo_m, hi_m, rot_m);
-  const bool ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
+  ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
   // Neither bound known (a library caller may pass V_c = inf): assume the parameters' bound.
-  const double accel_mps2 = std::isfinite(assumed_accel_mps2(ctx)) || ball_known
-                                ? assumed_accel_mps2(ctx)
-                                : params_.camera_accel_mps2;
+  const double accel_mps2 = std::isfinite(assumed_accel_mps2) || ball_known
+                                ? assumed_accel_mps2
+                                : params.camera_accel_mps2;
   // An unbounded acceleration leaves only the ball (0.5 A t^2 would be inf * 0 at t = 0).
-  const bool use_accel =
-      (params_.camera_model == CameraModel::kBoundedAccel && std::isfinite(accel_mps2)) ||
-      !ball_known;
-  const Inflation accel_rho = Inflation{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0,
-                                        rot_m, turn_radps, turn_cap_m}
-                                  .with_knees();
-  const Inflation ball_rho =
-      Inflation{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, turn_radps, turn_cap_m}
-          .with_knees();
-  // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
-  // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
-  const Inflation& reject_rho = use_accel ? accel_rho : ball_rho;
-  // The narrower screen axis and its sides' turn cap (both sides of x or y have the same one).
+  use_accel = (params.camera_model == CameraModel::kBoundedAccel && std::isfinite(accel_mps2)) ||
+              !ball_known;
+  accel_rho = Inflation{0.0, std::isfinite(accel_mps2) ? 0.5 * accel_mps2 : 0.0, rot_m,
+                        assumed_turn_radps, turn_cap_m}
+                  .with_knees();
+  ball_rho = Inflation{ball_known ? ctx.camera_max_speed_mps : 0.0, 0.0, rot_m, assumed_turn_radps,
+                       turn_cap_m}
+                 .with_knees();
   const int narrow_axis = half_w_m <= half_h_m ? 0 : 1;
-  const double half_min_m = std::min(half_w_m, half_h_m);
-  const double narrow_cap_m = turn_cap_m[Inflation::turn_side(narrow_axis, +1)];
-  const auto look_for = [&](double r_max_m) {
-    return look_ahead_s(reject_rho, half_min_m + r_max_m, narrow_cap_m, params_.a_max_mps2,
-                        ctx.dt_s, horizon_s);
-  };
+  half_min_m = std::min(half_w_m, half_h_m);
+  narrow_cap_m = turn_cap_m[Inflation::turn_side(narrow_axis, +1)];
+}
 
-  // Cheap rejection of every fragment at once before any root solve (two_box_clearance.hpp): a path
-  // that never has all three coordinates inside the box grown by the fragment's radius, with a
-  // margin the solves below agree with, over the fragment's own look-ahead, is no threat; for the
-  // robust models likewise the grown box over the window (section 4 of docs/camera_models.md).
-  // Most fragments end here.
-  const std::size_t n = ctx.fragments.size();
+double EdgeMinStrategy::Step::window_s(double r_max_m) const {
+  return look_ahead_s(reject_rho(), half_min_m + r_max_m, narrow_cap_m, params.a_max_mps2, ctx.dt_s,
+                      horizon_s);
+}
+
+TwoBoxClearance::Boxes EdgeMinStrategy::Step::rejection_boxes() const {
   TwoBoxClearance::Boxes boxes;
   boxes.frame = BoxFrame{cam.eye_m, {cam.right, cam.up, cam.forward}, ctx.camera_velocity_mps};
   boxes.a_mps2 = half_g;
@@ -488,263 +573,292 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   boxes.floor_s = ctx.dt_s;
   boxes.ground_m = ctx.ground_height_m;
   boxes.half_gy_mps2 = 0.5 * ctx.gravity_mps2.y();
-  boxes.grown = robust && n > 0;
+  boxes.grown = robust && !ctx.fragments.empty();
   boxes.grown_velocity_mps = use_accel ? ctx.camera_velocity_mps : Eigen::Vector3d::Zero();
+  return boxes;
+}
+
+void EdgeMinStrategy::Step::set_window(TwoBoxClearance::Boxes& boxes, double r_max_m) const {
+  const Inflation& rho = reject_rho();
+  boxes.window_s = window_s(r_max_m);
+  // Each side's growth only increases with time: its value at the window's end bounds it.
+  for (int k = 0; k < 3; ++k) {
+    boxes.grow_lo_m[k] = rho.at(boxes.window_s, rho.cap_m(k, -1));
+    boxes.grow_hi_m[k] = rho.at(boxes.window_s, rho.cap_m(k, +1));
+  }
+  // And piece by piece (its growth at its end, times as TwoBoxClearance computes them): the
+  // growth at the window's end is several times that of a path passing early in it, and the
+  // paths the whole window leaves in doubt are mostly such.
+  boxes.pieces = TwoBoxClearance::Boxes::kMaxPieces;
+  for (int j = 0; j < boxes.pieces; ++j) {
+    const double end_s = boxes.window_s * (j + 1) / boxes.pieces;
+    for (int k = 0; k < 3; ++k) {
+      boxes.piece_grow_lo_m[static_cast<std::size_t>(j)][k] = rho.at(end_s, rho.cap_m(k, -1));
+      boxes.piece_grow_hi_m[static_cast<std::size_t>(j)][k] = rho.at(end_s, rho.cap_m(k, +1));
+    }
+  }
+}
+
+bool EdgeMinStrategy::Step::needs_solve(std::size_t i) const {
+  if (robust && !grown_clears[i]) return true;
+  if (clears[i]) return false;
+  const FragmentState& f = ctx.fragments[i];
+  return !receding(cam.to_camera(f.position_m),
+                   cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps), f.radius_m);
+}
+
+EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::pushed(SolveAnswer answer,
+                                                           const Eigen::Vector3d& force_N) {
+  answer.pushed = true;
+  answer.force_N = force_N;
+  return answer;
+}
+
+EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve(std::size_t i, bool grown_clear) const {
+  SolveAnswer answer;
+  const FragmentState& f = ctx.fragments[i];
+  PathInBox path;
+  path.d = cam.to_camera(f.position_m);
+  path.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
+  const double r = f.radius_m;
+  // This fragment's look-ahead: until its path reaches the ground.
+  const double ground_s = time_to_ground_s(f.position_m.y(), f.velocity_mps.y(),
+                                           0.5 * ctx.gravity_mps2.y(), ctx.ground_height_m + r);
+  path.own_horizon_s = std::max(std::min(ground_s, cap_s), ctx.dt_s);
+  path.slabs =
+      Slabs{{-half_w_m - r, -half_h_m - r, -back_m - r}, {half_w_m + r, half_h_m + r, front_m + r}};
+  path.x = Coord{path.d.x(), path.w.x(), half_g.x()};
+  path.y = Coord{path.d.y(), path.w.y(), half_g.y()};
+  path.z = Coord{path.d.z(), path.w.z(), half_g.z()};
+  if (!clears[i] && !receding(path.d, path.w, r)) {
+    path.nominal = nominal_push(path.x, path.y, path.z, path.slabs, path.own_horizon_s, ctx.dt_s);
+  }
+  path.best = chosen(path.nominal.need, way_weights, weighted);
+  // Already inside the box's shadow on every side: nothing finite helps; push toward the
+  // nearest way out at the cap and let the report count it if it still hits.
+  path.a_nominal = !path.nominal.threat                          ? 0.0
+                   : std::isfinite(path.nominal.need[path.best]) ? path.nominal.need[path.best]
+                                                                 : 2.0 * params.a_max_mps2 + 1.0;
+  if (robust) return solve_worst_case(f, path, grown_clear);
+  if (!path.nominal.threat) return answer;
+  answer.candidate = true;
+  if (path.a_nominal <= 0.0) return answer;
+  return pushed(answer, f.mass_kg * path.a_nominal * dir[path.best]);
+}
+
+EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve_worst_case(const FragmentState& f,
+                                                                     const PathInBox& path,
+                                                                     bool grown_clear) const {
+  SolveAnswer answer;
+  const Eigen::Vector3d& d = path.d;
+  const Slabs& slabs = path.slabs;
+  const std::size_t best = path.best;
+  const double a_nominal = path.a_nominal;
+  // The worst case over the look-ahead window.
+  std::array<Constraint, 2> cons_store;
+  std::size_t n_cons = 0;
+  if (use_accel) cons_store[n_cons++] = {{path.x, path.y, path.z}, &accel_rho};
+  if (ball_known) {
+    // About the eye now: the fragment's own velocity, not the relative one.
+    const Eigen::Vector3d v = cam.dir_to_camera(f.velocity_mps);
+    cons_store[n_cons++] = {{Coord{d.x(), v.x(), half_g.x()}, Coord{d.y(), v.y(), half_g.y()},
+                             Coord{d.z(), v.z(), half_g.z()}},
+                            &ball_rho};
+  }
+  const std::span<const Constraint> cons(cons_store.data(), n_cons);
+  const double own_look_s = std::min(look_s, path.own_horizon_s);
+  const GrownSets now = grown_clear ? GrownSets{} : grown_sets(cons, slabs, own_look_s);
+  if (!path.nominal.threat && !now.threat) return answer;
+  answer.candidate = true;
+  if (now.threat) {
+    // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
+    // moving the fragment by a dt t along its axis; from the next step on, a push of at most
+    // a_max moves it D(t - dt) per unit. Only that axis's times inside the boxes change.
+    // Without a push the next step's worst case is this one's: no copies then.
+    std::span<const Constraint> wait_cons = cons;
+    const GrownSets* wait_sets = &now;
+    std::array<Constraint, 2> pushed_cons;
+    GrownSets pushed_sets;
+    if (a_nominal > 0.0) {
+      const std::size_t k = best < 2 ? 1 : 0;
+      const double sign = best % 2 == 0 ? 1.0 : -1.0;
+      const double dv = sign * std::min(a_nominal, params.a_max_mps2) * ctx.dt_s;
+      pushed_cons = cons_store;
+      for (std::size_t j = 0; j < n_cons; ++j) pushed_cons[j].axis[k].c1 += dv;
+      wait_cons = std::span<const Constraint>(pushed_cons.data(), n_cons);
+      pushed_sets = now;
+      pushed_sets.in[k] = axis_set(wait_cons, static_cast<int>(k), slabs, own_look_s);
+      join_axes(pushed_sets);
+      wait_sets = &pushed_sets;
+    }
+    const GrownSets& wait = *wait_sets;
+    // Waiting is safe when some allowed way's push from the next step on stays within a_max;
+    // the nominal way is tried first, and each way's sampling stops once it is out of reach.
+    bool wait_safe = !wait.threat;
+    for (std::size_t n_tried = 0; n_tried < 4 && !wait_safe; ++n_tried) {
+      const std::size_t w = (best + n_tried) % 4;
+      if (weighted && !(way_weights[w] > 0.0)) continue;
+      wait_safe = way_need(wait_cons, wait, slabs, w, ctx.dt_s, ctx.dt_s, params.a_max_mps2) <=
+                  params.a_max_mps2;
+    }
+    if (!wait_safe) {
+      const std::array<double, 4> wc_need = way_needs(cons, now, slabs, ctx.dt_s, 0.0);
+      const std::size_t wc_best = chosen(wc_need, way_weights, weighted);
+      const double a_wc =
+          std::isfinite(wc_need[wc_best]) ? wc_need[wc_best] : 2.0 * params.a_max_mps2 + 1.0;
+      // When no push within a_max beats the worst case, nothing is promised for this fragment
+      // any more: the capped push then goes the constant model's way out, which saves it from
+      // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
+      const bool beaten = !(a_wc <= params.a_max_mps2);
+      const std::size_t way = beaten && path.nominal.threat ? best : wc_best;
+      return pushed(answer, f.mass_kg * std::max(a_nominal, a_wc) * dir[way]);
+    }
+  }
+  if (a_nominal <= 0.0) return answer;
+  return pushed(answer, f.mass_kg * a_nominal * dir[best]);
+}
+
+void EdgeMinStrategy::Step::emit(std::size_t i, const SolveAnswer& answer, StepOutput& out) const {
+  if (answer.candidate) out.activity.candidates.push_back(static_cast<int>(i));
+  if (answer.pushed) {
+    apply_capped(out, static_cast<int>(i), answer.force_N, ctx.fragments[i].mass_kg,
+                 params.a_max_mps2);
+  }
+}
+
+// Cheap rejection of every fragment at once before any root solve (two_box_clearance.hpp): a path
+// that never has all three coordinates inside the box grown by the fragment's radius, with a
+// margin the solves below agree with, over the fragment's own look-ahead, is no threat; for the
+// robust models likewise the grown box over the window (section 4 of docs/camera_models.md).
+// Most fragments end here.
+void EdgeMinStrategy::reject_cheaply(Step& s) {
+  TwoBoxClearance::Boxes boxes = s.rejection_boxes();
   // The window and the growth depend on the largest radius, known only after the pass: the last
   // step's is used (a window and growth at least the solves' keep the rejection conservative, as
   // both grow with the radius), and the pass repeated in the rare step whose fragments are larger.
   // The hint changes how fast a step is, never what it answers.
   double r_hint_m = r_max_hint_m_;
-  const auto set_window = [&](double r_max_m) {
-    boxes.window_s = look_for(r_max_m);
-    // Each side's growth only increases with time: its value at the window's end bounds it.
-    for (int k = 0; k < 3; ++k) {
-      boxes.grow_lo_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, -1));
-      boxes.grow_hi_m[k] = reject_rho.at(boxes.window_s, reject_rho.cap_m(k, +1));
-    }
-    // And piece by piece (its growth at its end, times as TwoBoxClearance computes them): the
-    // growth at the window's end is several times that of a path passing early in it, and the
-    // paths the whole window leaves in doubt are mostly such.
-    boxes.pieces = TwoBoxClearance::Boxes::kMaxPieces;
-    for (int j = 0; j < boxes.pieces; ++j) {
-      const double end_s = boxes.window_s * (j + 1) / boxes.pieces;
-      for (int k = 0; k < 3; ++k) {
-        boxes.piece_grow_lo_m[static_cast<std::size_t>(j)][k] =
-            reject_rho.at(end_s, reject_rho.cap_m(k, -1));
-        boxes.piece_grow_hi_m[static_cast<std::size_t>(j)][k] =
-            reject_rho.at(end_s, reject_rho.cap_m(k, +1));
-      }
-    }
-  };
   if (boxes.grown) {
     if (!(r_hint_m >= 0.0)) {
       r_hint_m = 0.0;
-      for (const FragmentState& f : ctx.fragments) r_hint_m = std::max(r_hint_m, f.radius_m);
+      for (const FragmentState& f : s.ctx.fragments) r_hint_m = std::max(r_hint_m, f.radius_m);
     }
-    set_window(r_hint_m);
+    s.set_window(boxes, r_hint_m);
   }
-  // In chunks on the workers when there are some: the same answers (TwoBoxClearance::run).
-  const auto reject = [&] {
-    if (ctx.parallel != nullptr) {
-      clearance_.run(ctx.fragments, boxes, ctx.parallel);
-    } else {
-      clearance_.run(ctx.fragments, boxes);
-    }
-  };
-  reject();
-  double look_s = 0.0;
+  run_rejection(s.ctx, boxes);
   if (boxes.grown) {
     const double r_max_m = clearance_.max_radius_m();
     if (r_max_m > r_hint_m) {
-      set_window(r_max_m);
-      reject();
+      s.set_window(boxes, r_max_m);
+      run_rejection(s.ctx, boxes);
     }
     r_max_hint_m_ = r_max_m;
-    look_s = look_for(r_max_m);
+    s.look_s = s.window_s(r_max_m);
   }
-  const std::span<const char> clears = clearance_.clears();
-  const std::span<const char> grown_clears = clearance_.grown_clears();
-  const std::span<const std::int32_t> unsettled = clearance_.unsettled();
-  out.activity.rejected_cheaply = static_cast<int>(n - unsettled.size());
+  s.clears = clearance_.clears();
+  s.grown_clears = clearance_.grown_clears();
+  s.unsettled = clearance_.unsettled();
+}
 
-  // Cheap rejection: in front of the box and moving away in depth, with gravity not pulling it
-  // back (the camera's forward axis tilted toward the ground can).
-  const auto receding = [&](const Eigen::Vector3d& d, const Eigen::Vector3d& w, double r) {
-    return d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
-  };
-  const auto needs_solve = [&](std::size_t i) {
-    if (robust && !grown_clears[i]) return true;
-    if (clears[i]) return false;
+// In chunks on the workers when there are some: the same answers (TwoBoxClearance::run).
+void EdgeMinStrategy::run_rejection(const StepContext& ctx, const TwoBoxClearance::Boxes& boxes) {
+  if (ctx.parallel != nullptr) {
+    clearance_.run(ctx.fragments, boxes, ctx.parallel);
+  } else {
+    clearance_.run(ctx.fragments, boxes);
+  }
+}
+
+// The per-step budget: over max_solves fragments left to solve, the most urgent are solved and
+// the rest deferred to a later step, keeping the force they were last given (a constant push is
+// a plan until arrival: dropping it half way loses what it already did, and the urgent ones,
+// which a stale push could fail, are the ones solved).
+void EdgeMinStrategy::defer_beyond_budget(const Step& s, StepOutput& out) {
+  const StepContext& ctx = s.ctx;
+  const std::size_t n = ctx.fragments.size();
+  if (last_force_N_.size() != n) last_force_N_.assign(n, Eigen::Vector3d::Zero());
+  deferred_.assign(n, 0);
+  queue_.clear();
+  for (const std::int32_t u : s.unsettled) {
+    const auto i = static_cast<std::size_t>(u);
+    if (!s.needs_solve(i)) continue;
+    // Time to arrival: distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w;
+    // a fragment not closing in is last (+inf).
     const FragmentState& f = ctx.fragments[i];
-    return !receding(cam.to_camera(f.position_m),
-                     cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps), f.radius_m);
-  };
-
-  // The per-step budget: over max_solves fragments left to solve, the most urgent are solved and
-  // the rest deferred to a later step, keeping the force they were last given (a constant push is
-  // a plan until arrival: dropping it half way loses what it already did, and the urgent ones,
-  // which a stale push could fail, are the ones solved). Without a budget nothing here runs.
-  const bool budget = params_.max_solves > 0;
-  if (budget) {
-    if (last_force_N_.size() != n) last_force_N_.assign(n, Eigen::Vector3d::Zero());
-    deferred_.assign(n, 0);
-    queue_.clear();
-    for (const std::int32_t u : unsettled) {
-      const auto i = static_cast<std::size_t>(u);
-      if (!needs_solve(i)) continue;
-      // Time to arrival: distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w;
-      // a fragment not closing in is last (+inf).
-      const FragmentState& f = ctx.fragments[i];
-      const Eigen::Vector3d d = f.position_m - cam.eye_m;
-      const double closing = -dot3(d, f.velocity_mps - ctx.camera_velocity_mps);
-      const double arrival_s = closing > 0.0 ? squared_norm3(d) / closing : kInf;
-      // Threats to the protected box on the current path (not cleared of it) before those only
-      // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
-      queue_.push_back({clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});
-    }
-    const auto cap = static_cast<std::size_t>(params_.max_solves);
-    if (queue_.size() > cap) {
-      // (tier, arrival, index) is a total order: the same set is solved whatever the sort does.
-      std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
-                       queue_.end());
-      for (std::size_t k = cap; k < queue_.size(); ++k) {
-        deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
-      }
-      out.activity.deferred = static_cast<int>(queue_.size() - cap);
-    }
+    const Eigen::Vector3d d = f.position_m - s.cam.eye_m;
+    const double closing = -dot3(d, f.velocity_mps - ctx.camera_velocity_mps);
+    const double arrival_s = closing > 0.0 ? squared_norm3(d) / closing : kInf;
+    // Threats to the protected box on the current path (not cleared of it) before those only
+    // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
+    queue_.push_back({s.clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});
   }
-
-  const std::array<Eigen::Vector3d, 4> dir{cam.up, -cam.up, cam.right, -cam.right};
-  // The exact solve of one fragment the rejections left in doubt: whether it is a candidate and
-  // the force it asks for, if any. It reads only the step's constants and the fragment, so
-  // fragments may be solved on any workers at once.
-  const auto solve = [&](std::size_t i, bool grown_clear) {
-    SolveAnswer answer;
-    const auto push = [&answer](const Eigen::Vector3d& force_N) {
-      answer.pushed = true;
-      answer.force_N = force_N;
-      return answer;
-    };
-    const FragmentState& f = ctx.fragments[i];
-    const Eigen::Vector3d d = cam.to_camera(f.position_m);
-    const Eigen::Vector3d w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
-    const double r = f.radius_m;
-    // This fragment's look-ahead: until its path reaches the ground.
-    const double ground_s = time_to_ground_s(f.position_m.y(), f.velocity_mps.y(),
-                                             0.5 * ctx.gravity_mps2.y(), ctx.ground_height_m + r);
-    const double own_horizon_s = std::max(std::min(ground_s, cap_s), ctx.dt_s);
-    const Slabs slabs{{-half_w_m - r, -half_h_m - r, -back_m - r},
-                      {half_w_m + r, half_h_m + r, front_m + r}};
-    const Coord x{d.x(), w.x(), half_g.x()};
-    const Coord y{d.y(), w.y(), half_g.y()};
-    const Coord z{d.z(), w.z(), half_g.z()};
-    Nominal nominal;
-    if (!clears[i] && !receding(d, w, r)) {
-      nominal = nominal_push(x, y, z, slabs, own_horizon_s, ctx.dt_s);
+  const auto cap = static_cast<std::size_t>(params_.max_solves);
+  if (queue_.size() > cap) {
+    // (tier, arrival, index) is a total order: the same set is solved whatever the sort does.
+    std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
+                     queue_.end());
+    for (std::size_t k = cap; k < queue_.size(); ++k) {
+      deferred_[static_cast<std::size_t>(std::get<2>(queue_[k]))] = 1;
     }
-    const std::size_t best = chosen(nominal.need, way_weights_, weighted_);
-    // Already inside the box's shadow on every side: nothing finite helps; push toward the
-    // nearest way out at the cap and let the report count it if it still hits.
-    const double a_nominal = !nominal.threat                     ? 0.0
-                             : std::isfinite(nominal.need[best]) ? nominal.need[best]
-                                                                 : 2.0 * params_.a_max_mps2 + 1.0;
-    if (!robust) {
-      if (!nominal.threat) return answer;
-      answer.candidate = true;
-      if (a_nominal <= 0.0) return answer;
-      return push(f.mass_kg * a_nominal * dir[best]);
-    }
-
-    // The worst case over the look-ahead window.
-    std::array<Constraint, 2> cons_store;
-    std::size_t n_cons = 0;
-    if (use_accel) cons_store[n_cons++] = {{x, y, z}, &accel_rho};
-    if (ball_known) {
-      // About the eye now: the fragment's own velocity, not the relative one.
-      const Eigen::Vector3d v = cam.dir_to_camera(f.velocity_mps);
-      cons_store[n_cons++] = {{Coord{d.x(), v.x(), half_g.x()}, Coord{d.y(), v.y(), half_g.y()},
-                               Coord{d.z(), v.z(), half_g.z()}},
-                              &ball_rho};
-    }
-    const std::span<const Constraint> cons(cons_store.data(), n_cons);
-    const double own_look_s = std::min(look_s, own_horizon_s);
-    const GrownSets now = grown_clear ? GrownSets{} : grown_sets(cons, slabs, own_look_s);
-    if (!nominal.threat && !now.threat) return answer;
-    answer.candidate = true;
-    if (now.threat) {
-      // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
-      // moving the fragment by a dt t along its axis; from the next step on, a push of at most
-      // a_max moves it D(t - dt) per unit. Only that axis's times inside the boxes change.
-      // Without a push the next step's worst case is this one's: no copies then.
-      std::span<const Constraint> wait_cons = cons;
-      const GrownSets* wait_sets = &now;
-      std::array<Constraint, 2> pushed_cons;
-      GrownSets pushed_sets;
-      if (a_nominal > 0.0) {
-        const std::size_t k = best < 2 ? 1 : 0;
-        const double sign = best % 2 == 0 ? 1.0 : -1.0;
-        const double dv = sign * std::min(a_nominal, params_.a_max_mps2) * ctx.dt_s;
-        pushed_cons = cons_store;
-        for (std::size_t j = 0; j < n_cons; ++j) pushed_cons[j].axis[k].c1 += dv;
-        wait_cons = std::span<const Constraint>(pushed_cons.data(), n_cons);
-        pushed_sets = now;
-        pushed_sets.in[k] = axis_set(wait_cons, static_cast<int>(k), slabs, own_look_s);
-        join_axes(pushed_sets);
-        wait_sets = &pushed_sets;
-      }
-      const GrownSets& wait = *wait_sets;
-      // Waiting is safe when some allowed way's push from the next step on stays within a_max;
-      // the nominal way is tried first, and each way's sampling stops once it is out of reach.
-      bool wait_safe = !wait.threat;
-      for (std::size_t n_tried = 0; n_tried < 4 && !wait_safe; ++n_tried) {
-        const std::size_t w = (best + n_tried) % 4;
-        if (weighted_ && !(way_weights_[w] > 0.0)) continue;
-        wait_safe = way_need(wait_cons, wait, slabs, w, ctx.dt_s, ctx.dt_s, params_.a_max_mps2) <=
-                    params_.a_max_mps2;
-      }
-      if (!wait_safe) {
-        const std::array<double, 4> wc_need = way_needs(cons, now, slabs, ctx.dt_s, 0.0);
-        const std::size_t wc_best = chosen(wc_need, way_weights_, weighted_);
-        const double a_wc =
-            std::isfinite(wc_need[wc_best]) ? wc_need[wc_best] : 2.0 * params_.a_max_mps2 + 1.0;
-        // When no push within a_max beats the worst case, nothing is promised for this fragment
-        // any more: the capped push then goes the constant model's way out, which saves it from
-        // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
-        const bool beaten = !(a_wc <= params_.a_max_mps2);
-        const std::size_t way = beaten && nominal.threat ? best : wc_best;
-        return push(f.mass_kg * std::max(a_nominal, a_wc) * dir[way]);
-      }
-    }
-    if (a_nominal <= 0.0) return answer;
-    return push(f.mass_kg * a_nominal * dir[best]);
-  };
-  // A solve's answer into out: the candidate, then its force through the cap.
-  const auto emit = [&](std::size_t i, const SolveAnswer& answer) {
-    if (answer.candidate) out.activity.candidates.push_back(static_cast<int>(i));
-    if (answer.pushed) {
-      apply_capped(out, static_cast<int>(i), answer.force_N, ctx.fragments[i].mass_kg,
-                   params_.a_max_mps2);
-    }
-  };
-  const auto solve_unsettled = [&](std::size_t k) {
-    const auto i = static_cast<std::size_t>(unsettled[k]);
-    return solve(i, grown_clears[i] != 0);
-  };
-
-  if (!budget && ctx.parallel == nullptr) {
-    for (std::size_t k = 0; k < unsettled.size(); ++k) {
-      emit(static_cast<std::size_t>(unsettled[k]), solve_unsettled(k));
-    }
+    out.activity.deferred = static_cast<int>(queue_.size() - cap);
   }
-  if (!budget && ctx.parallel != nullptr) {
-    // Each answer to its own slot on the workers, then into out in the fragments' order: the
-    // same candidates, forces, capped and guarded as one after the other.
-    if (answers_.size() < unsettled.size()) answers_.resize(unsettled.size());
-    const auto solve_range = [&](std::int32_t begin, std::int32_t end, std::uint32_t) {
-      for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
-        answers_[k] = solve_unsettled(k);
-      }
-    };
-    for_ranges(ctx.parallel, static_cast<std::int32_t>(unsettled.size()), kMinSolveRange,
-               solve_range);
-    for (std::size_t k = 0; k < unsettled.size(); ++k) {
-      emit(static_cast<std::size_t>(unsettled[k]), answers_[k]);
-    }
+}
+
+void EdgeMinStrategy::solve_in_order(const Step& s, StepOutput& out) const {
+  for (std::size_t k = 0; k < s.unsettled.size(); ++k) {
+    const auto i = static_cast<std::size_t>(s.unsettled[k]);
+    s.emit(i, s.solve(i, s.grown_clears[i] != 0), out);
   }
-  for (std::size_t i = 0; budget && i < n; ++i) {
-    if (budget && deferred_[i]) {
+}
+
+// Each answer to its own slot on the workers, then into out in the fragments' order: the same
+// candidates, forces, capped and guarded as one after the other.
+void EdgeMinStrategy::solve_on_workers(const Step& s, StepOutput& out) {
+  const std::span<const std::int32_t> unsettled = s.unsettled;
+  if (answers_.size() < unsettled.size()) answers_.resize(unsettled.size());
+  const auto solve_range = [&](std::int32_t begin, std::int32_t end, std::uint32_t) {
+    for (auto k = static_cast<std::size_t>(begin); k < static_cast<std::size_t>(end); ++k) {
+      const auto i = static_cast<std::size_t>(unsettled[k]);
+      answers_[k] = s.solve(i, s.grown_clears[i] != 0);
+    }
+  };
+  for_ranges(s.ctx.parallel, static_cast<std::int32_t>(unsettled.size()), kMinSolveRange,
+             solve_range);
+  for (std::size_t k = 0; k < unsettled.size(); ++k) {
+    s.emit(static_cast<std::size_t>(unsettled[k]), answers_[k], out);
+  }
+}
+
+// Every fragment in order: a deferred one keeps its last force, the others are solved where the
+// rejection left them in doubt, and what each was given is kept for a later step that defers it.
+void EdgeMinStrategy::solve_within_budget(const Step& s, StepOutput& out) {
+  const std::size_t n = s.ctx.fragments.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (deferred_[i]) {
       if (!last_force_N_[i].isZero()) out.forces.push_back({static_cast<int>(i), last_force_N_[i]});
       continue;
     }
-    const bool grown_clear = !robust || grown_clears[i];
-    const bool cleared = clears[i] && grown_clear;
+    const bool grown_clear = !s.robust || s.grown_clears[i];
+    const bool cleared = s.clears[i] && grown_clear;
     const std::size_t forces_before = out.forces.size();
-    if (!cleared) emit(i, solve(i, grown_clear));
-    // What this step gave fragment i, for a later step that defers it.
-    if (budget) {
-      last_force_N_[i] =
-          out.forces.size() > forces_before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
-    }
+    if (!cleared) s.emit(i, s.solve(i, grown_clear), out);
+    last_force_N_[i] =
+        out.forces.size() > forces_before ? out.forces.back().force_N : Eigen::Vector3d::Zero();
+  }
+}
+
+void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
+  Step s(ctx, params_, assumed_accel_mps2(ctx), assumed_turn_radps(ctx), way_weights_, weighted_);
+  reject_cheaply(s);
+  out.activity.rejected_cheaply = static_cast<int>(ctx.fragments.size() - s.unsettled.size());
+  // Without a budget (max_solves) every fragment left in doubt is solved.
+  if (params_.max_solves > 0) {
+    defer_beyond_budget(s, out);
+    solve_within_budget(s, out);
+  } else if (ctx.parallel == nullptr) {
+    solve_in_order(s, out);
+  } else {
+    solve_on_workers(s, out);
   }
   // The occlusion bound on top: its prediction includes the pushes above.
   if (params_.cover_max < 1.0) cover_.step(ctx, params_, way_weights_, out);

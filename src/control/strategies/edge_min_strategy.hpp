@@ -123,6 +123,21 @@ class EdgeMinStrategy final : public Strategy {
   bool carried_over_ = false;                           // ... which did swap the two
   ResourceVector<std::tuple<int, double, int>> queue_{mem_};  // (tier, arrival, fragment)
   ResourceVector<char> deferred_{mem_};
+
+  // The stages of step(), in order, and the step's constants they share (Step, in the .cpp, with
+  // the exact solve of one fragment).
+  struct Step;
+  // The cheap rejection of every fragment (clearance_): its answers and the grown box's
+  // look-ahead into s.
+  void reject_cheaply(Step& s);
+  void run_rejection(const StepContext& ctx, const TwoBoxClearance::Boxes& boxes);
+  // The budget's ranking (max_solves > 0): which fragments this step leaves unsolved (deferred_).
+  void defer_beyond_budget(const Step& s, StepOutput& out);
+  // The exact solves of the fragments the rejection left in doubt, into out in the fragments'
+  // order: on the calling thread, on the workers (ctx.parallel), or within the budget.
+  void solve_in_order(const Step& s, StepOutput& out) const;
+  void solve_on_workers(const Step& s, StepOutput& out);
+  void solve_within_budget(const Step& s, StepOutput& out);
 };
 
 }  // namespace fragsim

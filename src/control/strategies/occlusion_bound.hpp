@@ -33,7 +33,10 @@
 // more pass over the samples. Fragments behind the near plane at every sample cost one test.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "memory/memory_resource.hpp"
@@ -88,6 +91,31 @@ class OcclusionBound {
   ResourceVector<Eigen::Vector3d> added_mps_{mem_};
 
   int paint(int sample, const Disc& d, int delta);
+
+  // The stages of step(), in order, and what they share (Path, Screen and Step, in the .cpp).
+  struct Path;
+  struct Screen;
+  struct Step;
+  // The sample times into times_s_; returns how many.
+  int sample_times(const StepContext& ctx, const EdgeMinParams& params);
+  // The grid cleared for k_samples samples of n fragments; returns its cells per sample.
+  std::size_t make_grid(const CameraPose& cam, const EdgeMinParams& params, std::size_t n,
+                        int k_samples);
+  // What this bound's pushes added, taken back from fragments behind the camera.
+  void brake_behind_camera(Step& s);
+  void draw_paths(const Step& s, ResourceVector<Path>& paths);
+  // Sample j's covered share, and whether it is over the bound.
+  double share(const Step& s, int j) const;
+  bool over(const Step& s, int j) const;
+  bool any_over(const Step& s) const;
+  // Fragment i's way out (4: none) and least push.
+  std::pair<std::size_t, double> plan(const Step& s, const Path& p, std::size_t i) const;
+  void rank_fragments(const Step& s, const ResourceVector<Path>& paths,
+                      ResourceVector<std::tuple<int, double, int>>& order);
+  void push_in_order(Step& s, const ResourceVector<Path>& paths,
+                     const ResourceVector<std::tuple<int, double, int>>& order);
+  // A push on fragment i, added to its force in out (or a new one) and to added_mps_.
+  void add_force(Step& s, std::size_t i, const Eigen::Vector3d& force_N);
 };
 
 }  // namespace fragsim
