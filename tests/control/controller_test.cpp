@@ -171,7 +171,7 @@ std::vector<fragsim_vec3> dense(const fragsim::StepOutput& out, std::size_t n) {
   return f;
 }
 
-TEST(ControlApi, VersionMatchesTheHeader) {
+TEST(Controller, VersionMatchesTheHeader) {
   EXPECT_EQ(fragsim_version(), FRAGSIM_CONTROL_VERSION);
   EXPECT_EQ(std::string(fragsim_version_string()),
             std::to_string(FRAGSIM_CONTROL_VERSION_MAJOR) + "." +
@@ -179,7 +179,7 @@ TEST(ControlApi, VersionMatchesTheHeader) {
                 std::to_string(FRAGSIM_CONTROL_VERSION_PATCH));
 }
 
-TEST(ControlApi, DefaultsAreTheToolsDefaults) {
+TEST(Controller, DefaultsAreTheToolsDefaults) {
   const fragsim_controller_def d = fragsim_default_controller_def();
   const fragsim::EdgeMinParams em;
   const fragsim::EdgeParams e;
@@ -199,7 +199,7 @@ TEST(ControlApi, DefaultsAreTheToolsDefaults) {
 }
 
 // The default camera's frustum is the tool's (geometry/frustum.hpp), and what control.h says it is.
-TEST(ControlApi, DefaultCameraHasTheToolsDefaultFrustum) {
+TEST(Controller, DefaultCameraHasTheToolsDefaultFrustum) {
   const fragsim_camera_def c = fragsim_default_camera_def();
   EXPECT_EQ((fragsim::FrustumDef{c.fovy_deg, c.aspect, c.near_m, c.far_m}),
             fragsim::kDefaultFrustum);
@@ -207,7 +207,7 @@ TEST(ControlApi, DefaultCameraHasTheToolsDefaultFrustum) {
             (fragsim::FrustumDef{60.0, 16.0 / 9.0, 0.1, 500.0}));
 }
 
-TEST(ControlApi, DefThatSkippedTheDefaultsFunctionIsRefused) {
+TEST(Controller, DefThatSkippedTheDefaultsFunctionIsRefused) {
   for (unsigned char fill : {0x00, 0xab}) {
     fragsim_controller_def def;
     std::memset(&def, fill, sizeof def);
@@ -220,7 +220,7 @@ TEST(ControlApi, DefThatSkippedTheDefaultsFunctionIsRefused) {
   }
 }
 
-TEST(ControlApi, BadDefValuesAreRefusedNamingTheField) {
+TEST(Controller, BadDefValuesAreRefusedNamingTheField) {
   struct Case {
     void (*change)(fragsim_controller_def&);
     const char* field;
@@ -276,7 +276,7 @@ TEST(ControlApi, BadDefValuesAreRefusedNamingTheField) {
   EXPECT_STREQ(tiny, "horiz");
 }
 
-TEST(ControlApi, NullArgumentsGiveAStatusNotACrash) {
+TEST(Controller, NullArgumentsGiveAStatusNotACrash) {
   fragsim_controller_id ctl{};
   EXPECT_EQ(fragsim_controller_create(nullptr, &ctl, nullptr, 0), FRAGSIM_ERROR_NULL_ARGUMENT);
   const fragsim_controller_def def = fragsim_default_controller_def();
@@ -307,7 +307,7 @@ TEST(ControlApi, NullArgumentsGiveAStatusNotACrash) {
 // 2 cm above the axis, coming at 10 m/s, enters the grown box at t = (5 - 0.25) / 10 = 0.475 s;
 // the cheapest way out is up, by 0.15 + 0.05 - 0.02 = 0.18 m, which a constant acceleration a
 // covers in (t^2 + t dt) / 2: a = 0.18 / (0.5 (0.475^2 + 0.475 / 60)) = 1.541480 m/s^2.
-TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
+TEST(Controller, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
   const fragsim_controller_def def = fragsim_default_controller_def();
   Controller c(def);
   const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -5.0, 0.0, 0.0, 10.0, 42)};
@@ -339,7 +339,7 @@ TEST(ControlApi, FragmentFiredAtAStillCameraGetsTheEdgeMinForce) {
 // down, by 0.15 + 0.05 + 0.02 = 0.22 m (sideways would be 0.2 + 0.05 = 0.25 m), so
 // a = 0.22 / (0.5 (0.475^2 + 0.475 / 60)), pointing down; the tool's strategy with the same
 // weights gives the same bits.
-TEST(ControlApi, ForbiddenTopEdgeSendsTheFragmentDown) {
+TEST(Controller, ForbiddenTopEdgeSendsTheFragmentDown) {
   fragsim_controller_def def = fragsim_default_controller_def();
   def.edge_min.edge_weights[0] = 0.0;
   Controller c(def);
@@ -368,7 +368,7 @@ TEST(ControlApi, ForbiddenTopEdgeSendsTheFragmentDown) {
 // width: 2 * 6 tan 30 deg / 2 = 3.46 m by 3.46 * 16/9 = 6.16 m, of which the wall covers
 // 4.1 x 3.46 m, 67%, and more as it nears. With cover_max = 0.3 fragments beyond the ones
 // threatening the camera are pushed out of the region; the tool's strategy gives the same bits.
-TEST(ControlApi, CoverMaxPushesTheWallOutOfTheCentre) {
+TEST(Controller, CoverMaxPushesTheWallOutOfTheCentre) {
   std::vector<fragsim_fragment> frags;
   for (int i = 0; i < 64; ++i) {
     fragsim_fragment f = fragment(0.5 * (i % 8) - 1.75, 0.5 * (i / 8) - 1.75, -6.0, 0.0, 0.0, 9.0,
@@ -406,7 +406,7 @@ TEST(ControlApi, CoverMaxPushesTheWallOutOfTheCentre) {
 // gravity, are within 20 + 3 m of the eye at most over the 3 s look-ahead and never nearer than
 // 20 m: far outside the protected box (its farthest corner 0.32 m away) and the grown one, so
 // the cheap rejection settles every one. A fifth fired at the lens (the case above) is not.
-TEST(ControlApi, StatsCountTheFragmentsRejectedCheaply) {
+TEST(Controller, StatsCountTheFragmentsRejectedCheaply) {
   std::vector<fragsim_fragment> frags;
   for (int i = 0; i < 4; ++i) frags.push_back(fragment(0.3 * i, 0.0, 20.0, 0.0, 0.0, 1.0, 10 + i));
   for (const fragsim_camera_model model : {FRAGSIM_CAMERA_CONSTANT, FRAGSIM_CAMERA_BOUNDED_ACCEL}) {
@@ -431,7 +431,7 @@ TEST(ControlApi, StatsCountTheFragmentsRejectedCheaply) {
   }
 }
 
-TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
+TEST(Controller, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
   std::vector<fragsim_fragment> frags;
   for (int i = 0; i < 64; ++i) {
     const double s = 0.1 * (i % 8) - 0.35;
@@ -480,7 +480,7 @@ TEST(ControlApi, EveryStrategyMatchesTheToolUnderGravityAndAMovingCamera) {
   }
 }
 
-TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
+TEST(Controller, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
   struct Case {
     void (*change)(TestInput&, std::vector<fragsim_fragment>&);
     fragsim_status status;
@@ -544,7 +544,7 @@ TEST(ControlApi, NonFiniteOrNegativeInputsAreRefusedWithZeroForces) {
   }
 }
 
-TEST(ControlApi, ExtremeFiniteInputsNeverGiveANonFiniteForce) {
+TEST(Controller, ExtremeFiniteInputsNeverGiveANonFiniteForce) {
   const double big = 1e300;
   std::vector<fragsim_fragment> frags{
       fragment(0.0, 0.0, -big, 0.0, 0.0, big, 1), fragment(0.0, 0.0, -0.01, 0.0, 0.0, big, 2),
@@ -572,7 +572,7 @@ TEST(ControlApi, ExtremeFiniteInputsNeverGiveANonFiniteForce) {
 
 // Without gravity a fragment 40.25 m ahead at 10 m/s reaches the box at t = 4 s: beyond the
 // default 3 s look-ahead, inside a 5 s one, and beyond a shot that ends at 2 s.
-TEST(ControlApi, TheHorizonCapDecidesHowFarAheadPathsAreExamined) {
+TEST(Controller, TheHorizonCapDecidesHowFarAheadPathsAreExamined) {
   const std::vector<fragsim_fragment> frags{fragment(0.0, 0.02, -40.25, 0.0, 0.0, 10.0, 1)};
   for (double cap : {3.0, 5.0}) {
     for (double end : {kInf, 2.0}) {
@@ -590,7 +590,7 @@ TEST(ControlApi, TheHorizonCapDecidesHowFarAheadPathsAreExamined) {
 }
 
 // The thesis examines non-candidates only at the first step; the library keys that by id.
-TEST(ControlApi, EdgeKeepsItsCandidateSetByIdAsFragmentsComeAndGo) {
+TEST(Controller, EdgeKeepsItsCandidateSetByIdAsFragmentsComeAndGo) {
   fragsim_controller_def def = fragsim_default_controller_def();
   def.strategy = FRAGSIM_STRATEGY_EDGE;
   Controller c(def);
@@ -644,7 +644,7 @@ TEST(ControlApi, EdgeKeepsItsCandidateSetByIdAsFragmentsComeAndGo) {
   EXPECT_EQ(st.new_ids, 3);
 }
 
-TEST(ControlApi, StridedArraysGiveTheSameForcesAsStructs) {
+TEST(Controller, StridedArraysGiveTheSameForcesAsStructs) {
   // The engine's own layout: positions and velocities in one array, the rest apart.
   struct Body {
     double position[3];
@@ -700,7 +700,7 @@ TEST(ControlApi, StridedArraysGiveTheSameForcesAsStructs) {
   EXPECT_EQ(out[0], 0.0);
 }
 
-TEST(ControlApi, ControllersAreIndependent) {
+TEST(Controller, ControllersAreIndependent) {
   fragsim_controller_def def = fragsim_default_controller_def();
   def.strategy = FRAGSIM_STRATEGY_EDGE;
   Controller a(def);

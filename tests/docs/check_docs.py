@@ -576,21 +576,6 @@ MIRROR_UNTESTED = {
 
 # Test files whose suites are not named after them, each with the reason.
 MIRROR_SUITES = {
-    "tests/control/controller_test.cpp": "suite ControlApi: renamed with the split of the "
-                                         "controller's step, which moves these tests",
-    "tests/sim/world_convex_test.cpp": "WorldConvexPairs, ConvexShapes: renamed with the split of "
-                                       "world.cpp's contact manifold",
-    "tests/sim/world_skip_test.cpp": "AutoDisable, CullResting, SkipKeys: renamed with the split "
-                                     "of world.cpp's contact manifold",
-    "tests/sim/world_wall_test.cpp": "WallWorld: renamed with the split of world.cpp's contact "
-                                     "manifold",
-    "tests/strategies/edge_min_horizon_budget_test.cpp": "EdgeMinHorizon, EdgeMinBudget: renamed "
-                                                         "with the split of edge-min's step",
-    "tests/strategies/edge_min_strategy_any_turn_test.cpp": "EdgeMinAnyTurn: renamed with the "
-                                                            "split of edge-min's step",
-    "tests/strategies/edge_min_visibility_test.cpp": "EdgeWeights, EdgeMinVisibilityKeys, "
-                                                     "CoverMax: renamed with the split of "
-                                                     "edge-min's step",
     "tests/stress/stress_test.cpp": "its own program (ctest Stress.shard0/1): StressMatrix, "
                                     "LongRun and WallIsland are the parts of its matrix, each "
                                     "with its own fixture",

@@ -85,7 +85,7 @@ Eigen::Matrix3d axis_angle(const Eigen::Vector3d& axis, double angle_rad) {
 
 // The hand-written closed forms against integrating the faces' tetrahedra: the test shapes are
 // what their comments say.
-TEST(ConvexShapes, ClosedFormsMatchIntegrationOverTheFaces) {
+TEST(WorldConvex, ClosedFormsMatchIntegrationOverTheFaces) {
   for (const ConvexShape& s :
        {cube_shape(0.05), regular_tetrahedron(0.04), corner_tetrahedron(0.12, 0.08, 0.1)}) {
     const test::MassProperties m = test::mass_properties(s.vertices_m, s.faces);
@@ -137,7 +137,7 @@ TEST(WorldConvex, MassInertiaAndPoseHandedToOdeAreTheShapes) {
 // --- which pairs collide ------------------------------------------------------------------------
 
 // ODE's own convex-plane collider: every vertex below the plane, depth as sunk, the plane's normal.
-TEST(WorldConvexPairs, ConvexAgainstTheGroundPlane) {
+TEST(WorldConvex, ConvexAgainstTheGroundPlane) {
   const auto cube = shared(cube_shape(0.05));
   const Scene scene = still_scene();
   World world(scene, {},
@@ -180,7 +180,7 @@ TEST(WorldConvex, CellsLandingAtALongStepKeepTheExactSolverQuiet) {
 
 // The sensor is a box: convex-box goes to libccd (detection is all a sensor needs). A regular
 // tetrahedron whose bounding box reaches into the camera body while its hull does not is no hit.
-TEST(WorldConvexPairs, ConvexAgainstTheCameraSensorBox) {
+TEST(WorldConvex, ConvexAgainstTheCameraSensorBox) {
   const Scene scene = still_scene();  // body 0.3 x 0.2 x 0.3 m about the eye (0, 1.6, 0)
   const CameraPath path(scene.camera);
   const double a = 0.04;
@@ -217,7 +217,7 @@ CameraWallSpec test_wall() {
 // The wall is a box: libccd's one point per pair, turned into the face's corners (world.cpp,
 // convex_manifold). A cube piece 1 mm into the wall's far face: its four near corners, 1 mm deep,
 // pushed along -z, away from the camera.
-TEST(WorldConvexPairs, ConvexAgainstTheWallBoxGivesTheFaceCorners) {
+TEST(WorldConvex, ConvexAgainstTheWallBoxGivesTheFaceCorners) {
   const Scene scene = still_scene();
   const CameraPath path(scene.camera);
   WorldNeeds needs;
@@ -239,7 +239,7 @@ TEST(WorldConvexPairs, ConvexAgainstTheWallBoxGivesTheFaceCorners) {
 }
 
 // Fragment collisions: convex-convex and convex-box, also through libccd, also with the manifold.
-TEST(WorldConvexPairs, ConvexAgainstConvexAndAgainstABoxFragment) {
+TEST(WorldConvex, ConvexAgainstConvexAndAgainstABoxFragment) {
   Scene scene = still_scene();
   scene.sim.fragment_collisions = true;
   const auto cube = shared(cube_shape(0.05));
@@ -451,7 +451,7 @@ ConvexShape octagonal_prism(double r_m, double h_m) {
 // over the footprint. Of 8 corners on a circle of radius r, farthest-point picking from corner 0
 // takes corner 4 (2 r away), then 2 and 6: a square of side r sqrt(2), the widest 4 the octagon
 // has.
-TEST(WorldConvexPairs, ConvexGroundContactsAreSpreadOverTheFootprint) {
+TEST(WorldConvex, ConvexGroundContactsAreSpreadOverTheFootprint) {
   const double r = 0.05;
   const double h = 0.02;
   const auto prism = shared(octagonal_prism(r, h));
@@ -488,7 +488,7 @@ TEST(WorldConvexPairs, ConvexGroundContactsAreSpreadOverTheFootprint) {
   EXPECT_EQ(WorldProbe::contacts(world, 0, ProbeTarget::kGround).size(), 4u);
 }
 
-TEST(WorldConvexPairs, ConvexGroundContactsKeyIsRangeChecked) {
+TEST(WorldConvex, ConvexGroundContactsKeyIsRangeChecked) {
   auto error_of = [](const std::string& text) {
     try {
       parse_scene(text, "bad.ini");

@@ -57,7 +57,7 @@ Eigen::Vector3d position_of(const World& world, int i) {
   return s[static_cast<std::size_t>(i)].position_m;
 }
 
-TEST(AutoDisable, RestingFragmentSleepsAfterRestStepsAndThenStaysExactlyFixed) {
+TEST(WorldSkip, RestingFragmentSleepsAfterRestStepsAndThenStaysExactlyFixed) {
   const Scene scene = skip_scene(true, false);
   const CameraPath path(scene.camera);
   World world(scene, {}, {resting_cube(0.0, -3.0)});
@@ -78,7 +78,7 @@ TEST(AutoDisable, RestingFragmentSleepsAfterRestStepsAndThenStaysExactlyFixed) {
   EXPECT_TRUE(world.init_states()[0].touched);
 }
 
-TEST(AutoDisable, PushWakesASleepingFragmentAndMovesItByFOverM) {
+TEST(WorldSkip, PushWakesASleepingFragmentAndMovesItByFOverM) {
   Scene scene = skip_scene(true, false);
   scene.ground.friction = 0.0;  // nothing but the push acts along x
   const CameraPath path(scene.camera);
@@ -100,7 +100,7 @@ TEST(AutoDisable, PushWakesASleepingFragmentAndMovesItByFOverM) {
   EXPECT_NEAR(world.init_states()[0].velocity_mps.x(), force_N / kMass_kg * kDt_s, 1e-12);
 }
 
-TEST(CullResting, RestingFragmentOutOfViewIsCulledAndStaysExactlyFixed) {
+TEST(WorldSkip, RestingFragmentOutOfViewIsCulledAndStaysExactlyFixed) {
   const Scene scene = skip_scene(false, true);
   const CameraPath path(scene.camera);
   // Fragment 0 behind the camera, fragment 1 in view.
@@ -123,7 +123,7 @@ TEST(CullResting, RestingFragmentOutOfViewIsCulledAndStaysExactlyFixed) {
 
 // At 3 m depth the view's half width is 3 tan(30 deg) 16/9 = 3.079 m; a plane through the eye at
 // that edge has the normal (1, 0, -1.026) / 1.433. The cubes' bounding radius is 0.0866 m.
-TEST(CullResting, OnlyWhatIsWhollyOutsideTheViewIsCulled) {
+TEST(WorldSkip, OnlyWhatIsWhollyOutsideTheViewIsCulled) {
   const Scene scene = skip_scene(false, true);
   const CameraPath path(scene.camera);
   // Centres 0.154 m and 0.050 m outside the right edge's plane; one ahead, one far behind.
@@ -137,7 +137,7 @@ TEST(CullResting, OnlyWhatIsWhollyOutsideTheViewIsCulled) {
   EXPECT_EQ(world.activity(3), FragmentActivity::kCulled);
 }
 
-TEST(CullResting, PushUnculls) {
+TEST(WorldSkip, PushUnculls) {
   Scene scene = skip_scene(false, true);
   scene.ground.friction = 0.0;
   const CameraPath path(scene.camera);
@@ -155,7 +155,7 @@ TEST(CullResting, PushUnculls) {
 
 // The camera backs away from what it looks at, along the ground, into a fragment resting behind
 // it: out of view, so it is culled, but the camera coming near wakes it in time for the sensor.
-TEST(CullResting, CameraDrivingIntoACulledFragmentStillHitsIt) {
+TEST(WorldSkip, CameraDrivingIntoACulledFragmentStillHitsIt) {
   for (const bool auto_disable : {false, true}) {
     for (const bool cull : {false, true}) {
       Scene scene = skip_scene(auto_disable, cull);
@@ -181,7 +181,7 @@ TEST(CullResting, CameraDrivingIntoACulledFragmentStillHitsIt) {
 }
 
 // The wall strategy's wall, carried toward a sleeping fragment, wakes and pushes it.
-TEST(AutoDisable, WallWakesASleepingFragment) {
+TEST(WorldSkip, WallWakesASleepingFragment) {
   Scene scene = skip_scene(true, false);
   scene.camera.waypoints_m = {{0.0, 0.3, 0.0}, {0.0, 0.3, -6.0}};
   scene.camera.look_at_m = {{0.0, 0.3, -10.0}};
@@ -200,7 +200,7 @@ TEST(AutoDisable, WallWakesASleepingFragment) {
 }
 
 // A fragment falling onto a sleeping (or culled) one wakes it (fragment collisions on).
-TEST(CullResting, FragmentContactWakesSleepingAndCulledFragments) {
+TEST(WorldSkip, FragmentContactWakesSleepingAndCulledFragments) {
   for (const bool cull : {false, true}) {
     Scene scene = skip_scene(!cull, cull);
     scene.sim.fragment_collisions = true;
@@ -263,7 +263,7 @@ PileRun run_pile(const Scene& scene) {
   return run;
 }
 
-TEST(CullResting, NeverChangesASceneWhoseFragmentsStayInView) {
+TEST(WorldSkip, NeverChangesASceneWhoseFragmentsStayInView) {
   const PileRun plain = run_pile(pile_scene(false, false));
   const PileRun culled = run_pile(pile_scene(true, false));
   EXPECT_EQ(culled.culled_at_end, 0);
@@ -284,7 +284,7 @@ TEST(CullResting, NeverChangesASceneWhoseFragmentsStayInView) {
   EXPECT_EQ(away.touched_at_end, 64);
 }
 
-TEST(SkipKeys, ParseRoundTripAndRanges) {
+TEST(WorldSkip, ParseRoundTripAndRanges) {
   const Scene s = parse_scene(
       "[simulation]\n"
       "auto_disable = on\n"

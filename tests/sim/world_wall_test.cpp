@@ -43,7 +43,7 @@ WorldNeeds wall_needs() {
 // A 10 cm cube centred in the wall, moving away from the camera at 1 m/s: z(t) = -0.6 - t + t^2.
 // It overlaps the wall until its near face passes the wall's back face, z < -0.675 (t = 0.083 s),
 // turns at t = 0.5 s (z = -0.85) and comes back to the wall at t = 0.92 s at 0.83 m/s.
-TEST(WallWorld, FragmentBornInsideTheWallPassesOutThenBouncesLikeAnyOther) {
+TEST(WorldWall, FragmentBornInsideTheWallPassesOutThenBouncesLikeAnyOther) {
   const Scene scene = wall_scene();
   const CameraPath path(scene.camera);
   World world(scene, wall_needs(), {cube({0.0, 1.6, -0.6}, {0.0, 0.0, -1.0})});
@@ -75,7 +75,7 @@ TEST(WallWorld, FragmentBornInsideTheWallPassesOutThenBouncesLikeAnyOther) {
 }
 
 // The same cube outside the wall from the start, moving toward it: the wall stops it at once.
-TEST(WallWorld, FragmentOutsideTheWallBouncesOffIt) {
+TEST(WorldWall, FragmentOutsideTheWallBouncesOffIt) {
   const Scene scene = wall_scene();
   const CameraPath path(scene.camera);
   // Its near face 2.5 cm short of the wall's back face.

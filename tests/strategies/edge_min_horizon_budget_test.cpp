@@ -56,7 +56,7 @@ EdgeMinParams constant_model() {
 }
 
 // y(t) = 0.1 - 4.905 t^2 reaches 0.05 (the ground plus the radius) at sqrt(0.05 / 4.905).
-TEST(EdgeMinHorizon, TimeToGroundIsTheLaterDownwardRoot) {
+TEST(EdgeMinHorizonBudget, TimeToGroundIsTheLaterDownwardRoot) {
   EXPECT_NEAR(EdgeMinStrategy::time_to_ground_s(0.1, 0.0, -4.905, 0.05), 0.1009636, 1e-6);
   // Thrown up at 4.905 m/s from the ground's height: back down through it at t = 1 s.
   EXPECT_NEAR(EdgeMinStrategy::time_to_ground_s(0.05, 4.905, -4.905, 0.05), 1.0, 1e-12);
@@ -75,7 +75,7 @@ TEST(EdgeMinHorizon, TimeToGroundIsTheLaterDownwardRoot) {
 // would enter the box's front (depth 0.25 m) at t = 4.75 / 30 = 0.158 s at y = 0.1 - 4.905 *
 // 0.158^2 = -0.023 m, inside the box's [-0.08, 0.32] m. It bounces before that: no push. With
 // no ground, or the ground 10 m below, the path is examined for the whole 3 s: pushed.
-TEST(EdgeMinHorizon, APathThatHitsTheGroundFirstIsNotPushed) {
+TEST(EdgeMinHorizonBudget, APathThatHitsTheGroundFirstIsNotPushed) {
   const std::vector<FragmentState> frags{fragment({0.0, 0.1, -5.0}, {0.0, 0.0, 30.0})};
   for (double ground_m : {0.0, -10.0, -kInf}) {
     EdgeMinStrategy s(constant_model());
@@ -91,7 +91,7 @@ TEST(EdgeMinHorizon, APathThatHitsTheGroundFirstIsNotPushed) {
 
 // The cap bounds the look-ahead when nothing comes down: zero gravity, a fragment 40.25 m ahead
 // at 10 m/s reaches the box (0.25 m in front of the eye) at t = 4 s.
-TEST(EdgeMinHorizon, TheCapBoundsAPathThatNeverComesDown) {
+TEST(EdgeMinHorizonBudget, TheCapBoundsAPathThatNeverComesDown) {
   const std::vector<FragmentState> frags{fragment({0.0, 0.02, -40.25}, {0.0, 0.0, 10.0})};
   for (double cap_s : {3.0, 5.0}) {
     EdgeMinParams p = constant_model();
@@ -113,7 +113,7 @@ std::vector<FragmentState> three_threats() {
           fragment({0.0, -0.02, -3.0}, {0.0, 0.0, 1.0})};
 }
 
-TEST(EdgeMinBudget, TheCapSolvesTheSoonestToArriveAndDefersTheRest) {
+TEST(EdgeMinHorizonBudget, TheCapSolvesTheSoonestToArriveAndDefersTheRest) {
   const std::vector<FragmentState> frags = three_threats();
   EdgeMinParams p = constant_model();
   p.horizon_cap_s = 5.0;
@@ -138,7 +138,7 @@ TEST(EdgeMinBudget, TheCapSolvesTheSoonestToArriveAndDefersTheRest) {
 }
 
 // A deferred fragment keeps the force of the last step it was solved, to the bit.
-TEST(EdgeMinBudget, ADeferredFragmentKeepsItsLastForce) {
+TEST(EdgeMinHorizonBudget, ADeferredFragmentKeepsItsLastForce) {
   EdgeMinParams p = constant_model();
   p.horizon_cap_s = 5.0;
   p.max_solves = 1;
@@ -167,7 +167,7 @@ TEST(EdgeMinBudget, ADeferredFragmentKeepsItsLastForce) {
 
 // With no cap (0) or a cap above the number of survivors, the same forces to the bit, over a
 // few steps of 64 fragments under gravity with the default (bounded_accel) model.
-TEST(EdgeMinBudget, ACapNeverReachedChangesNothing) {
+TEST(EdgeMinHorizonBudget, ACapNeverReachedChangesNothing) {
   std::vector<FragmentState> frags;
   for (int i = 0; i < 64; ++i) {
     const double s = 0.1 * (i % 8) - 0.35;
@@ -209,7 +209,7 @@ TEST(EdgeMinBudget, ACapNeverReachedChangesNothing) {
 
 // The C API: the def's max_solves reaches the strategy, the deferred count comes back in the
 // stats, a deferred fragment's last force is kept by id, and a negative cap is refused.
-TEST(EdgeMinBudget, TheControllerReportsDeferredFragments) {
+TEST(EdgeMinHorizonBudget, TheControllerReportsDeferredFragments) {
   fragsim_controller_def def = fragsim_default_controller_def();
   EXPECT_EQ(def.edge_min.max_solves, 0);
   def.edge_min.camera_model = FRAGSIM_CAMERA_CONSTANT;

@@ -122,7 +122,7 @@ FragmentState passing(double height_m) {
 }
 constexpr double kSpin_s = 0.98;
 
-TEST(EdgeMinAnyTurn, ACameraThatRollsIntoAPassingFragmentIsHitWithoutTheTurn) {
+TEST(EdgeMinStrategyAnyTurn, ACameraThatRollsIntoAPassingFragmentIsHitWithoutTheTurn) {
   // The geometry above, checked: the constant model and a declared turn rate of 0 leave the
   // fragment alone until the roll (it misses B as it is), and the roll brings B within 0.03 m of
   // it; the push they start once they see it inside is too late to keep it 5 mm clear.
@@ -137,7 +137,7 @@ TEST(EdgeMinAnyTurn, ACameraThatRollsIntoAPassingFragmentIsHitWithoutTheTurn) {
   EXPECT_LT(no_turn.closest_m, kRadius - 5e-3);
 }
 
-TEST(EdgeMinAnyTurn, AFragmentPassingInsideTheTurnBallIsPushedClear) {
+TEST(EdgeMinStrategyAnyTurn, AFragmentPassingInsideTheTurnBallIsPushedClear) {
   // Declared: 180 degrees a step, and also no bound at all (inf, the default). The region then
   // reaches R = 0.3702 m up within 3 ms (the chord rot * turn t meets the ball's cap
   // rot - 0.15 = 0.17 m) and the fragment at 0.28 m is pushed out before it arrives: it never
@@ -150,7 +150,7 @@ TEST(EdgeMinAnyTurn, AFragmentPassingInsideTheTurnBallIsPushedClear) {
   }
 }
 
-TEST(EdgeMinAnyTurn, AFragmentPassingOutsideTheTurnBallIsLeftAlone) {
+TEST(EdgeMinStrategyAnyTurn, AFragmentPassingOutsideTheTurnBallIsLeftAlone) {
   // 0.5 m up: farther than R = 0.3702 m from the eye at every time, so no orientation of B can
   // reach it, however fast the turn: never even a candidate.
   for (const double turn : {kHalfTurnPerStep_radps, kUndeclaredBound}) {
@@ -161,7 +161,7 @@ TEST(EdgeMinAnyTurn, AFragmentPassingOutsideTheTurnBallIsLeftAlone) {
   }
 }
 
-TEST(EdgeMinAnyTurn, AFastBoundedTurnGivesTheBallNotTheChord) {
+TEST(EdgeMinStrategyAnyTurn, AFastBoundedTurnGivesTheBallNotTheChord) {
   // 720 degrees a second. 0.45 m up, level with the eye 0.1 s from now at 10 m/s. The chord
   // bound alone would reach 0.2 + 0.3202 x 12.57 x 0.063 = 0.45 m up by the time the fragment is
   // within R in depth (0.063 s) and 0.6 m by the pass: it would hold the fragment in doubt. The
@@ -193,7 +193,7 @@ bool enters_chord_region(const FragmentState& f, double turn_radps, double t_end
   return false;
 }
 
-TEST(EdgeMinAnyTurn, ABoundedTurnNeverHoldsMoreInDoubtThanTheChordAlone) {
+TEST(EdgeMinStrategyAnyTurn, ABoundedTurnNeverHoldsMoreInDoubtThanTheChordAlone) {
   // Random fragments near the camera, turn rates 0 to 1,440 degrees a second, a look-ahead of
   // 0.3 s (the shot ends then). A fragment edge-min holds in doubt (a candidate) must enter the
   // chord bound's region within the look-ahead: the new region is never larger. Sampling every
@@ -226,7 +226,7 @@ TEST(EdgeMinAnyTurn, ABoundedTurnNeverHoldsMoreInDoubtThanTheChordAlone) {
   EXPECT_GT(chord_only, 0);
 }
 
-TEST(EdgeMinAnyTurn, WhenTheWorstCaseCannotBeBeatenTheCapGoesTheConstantModelsWay) {
+TEST(EdgeMinStrategyAnyTurn, WhenTheWorstCaseCannotBeBeatenTheCapGoesTheConstantModelsWay) {
   // A camera declaring A = 80 m/s^2 > a_max and any turn: close fragments' worst cases need more
   // than a_max on every way out, so nothing is promised; the capped push then goes where the
   // constant model pushes (the likeliest camera keeps its velocity and view), at a_max. Random

@@ -39,7 +39,7 @@ Eigen::Vector3d total_push(const test::RecordedRun& o) {
   return sum;
 }
 
-TEST(EdgeWeights, EqualWeightsTakeTheNearestEdgeTheTop) {
+TEST(EdgeMinVisibility, EqualWeightsTakeTheNearestEdgeTheTop) {
   const auto o = test::run_recorded(at_the_lens({1, 1, 1, 1}), "edge-min");
   EXPECT_GT(total_push(o).y(), 0.0);
   EXPECT_EQ(total_push(o).x(), 0.0);
@@ -48,7 +48,7 @@ TEST(EdgeWeights, EqualWeightsTakeTheNearestEdgeTheTop) {
   EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
-TEST(EdgeWeights, ForbiddenTopSendsTheFragmentOutThroughTheBottom) {
+TEST(EdgeMinVisibility, ForbiddenTopSendsTheFragmentOutThroughTheBottom) {
   // Top forbidden: of the others the bottom needs least (0.2566 m against 0.2766 and 0.2966).
   const auto o = test::run_recorded(at_the_lens({0, 1, 1, 1}), "edge-min");
   for (const auto& step : o.rec.steps) {
@@ -60,7 +60,7 @@ TEST(EdgeWeights, ForbiddenTopSendsTheFragmentOutThroughTheBottom) {
   EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
-TEST(EdgeWeights, OnlyTheSidesSendItRightTheNearerSide) {
+TEST(EdgeMinVisibility, OnlyTheSidesSendItRightTheNearerSide) {
   const auto o = test::run_recorded(at_the_lens({0, 0, 1, 1}), "edge-min");
   EXPECT_GT(total_push(o).x(), 0.0);
   EXPECT_EQ(total_push(o).y(), 0.0);
@@ -68,7 +68,7 @@ TEST(EdgeWeights, OnlyTheSidesSendItRightTheNearerSide) {
   EXPECT_EQ(o.summary.intersections.camera_hit_fragments, 0);
 }
 
-TEST(EdgeWeights, AHeavierWeightBuysAFartherEdge) {
+TEST(EdgeMinVisibility, AHeavierWeightBuysAFartherEdge) {
   // Left needs 0.2966 / 0.2166 = 1.37 times the top's push: a weight of 2 on the left wins.
   const auto o = test::run_recorded(at_the_lens({1, 1, 2, 1}), "edge-min");
   EXPECT_LT(total_push(o).x(), 0.0);
@@ -81,7 +81,7 @@ TEST(EdgeWeights, AHeavierWeightBuysAFartherEdge) {
 
 // Equal weights other than 1 go through the weighted rule, which must then be the least push:
 // every force of every step of a 125-fragment scene, bit for bit, against the default weights.
-TEST(EdgeWeights, EqualWeightsGiveBitIdenticalForces) {
+TEST(EdgeMinVisibility, EqualWeightsGiveBitIdenticalForces) {
   Scene scene = load_scene(std::string(FRAGSIM_DATA_DIR) + "/scenes/thesis125.ini");
   const auto a = test::run_recorded(scene, "edge-min");
   scene.strategies.edge_min.edge_weights = {2.5, 2.5, 2.5, 2.5};
@@ -114,7 +114,7 @@ std::string message_for(const std::string& key, const std::string& value) {
   return "";
 }
 
-TEST(EdgeMinVisibilityKeys, RangesAreChecked) {
+TEST(EdgeMinVisibility, RangesAreChecked) {
   EXPECT_EQ(message_for("edge_weights", "1 2 0 4"), "");
   EXPECT_EQ(message_for("cover_max", "0.5"), "");
   for (const auto& [key, bad] :
@@ -176,7 +176,7 @@ StepContext still_camera(std::span<const FragmentState> fragments) {
 // B = 12, 23 samples at stride 1, then 12 per doubling of the stride up to 1e9 steps (about 26
 // doublings), so a few hundred samples, the last at the horizon, and no loop over every step (it
 // hung before, found by the scene keys' property test).
-TEST(CoverMax, ALongHorizonAtATinyStepIsSampledByBands) {
+TEST(EdgeMinVisibility, ALongHorizonAtATinyStepIsSampledByBands) {
   const std::vector<FragmentState> wall = wall_of_boxes(5.0, 4.0);
   EdgeMinParams p;
   p.cover_max = 0.5;
@@ -194,7 +194,7 @@ TEST(CoverMax, ALongHorizonAtATinyStepIsSampledByBands) {
   EXPECT_GT(b.sample_times_s().back(), 8.0);  // the last band's stride is 2^26 steps, 0.67 s
 }
 
-TEST(CoverMax, PredictedCoverageOfAWallStaysUnderTheBound) {
+TEST(EdgeMinVisibility, PredictedCoverageOfAWallStaysUnderTheBound) {
   // The bound alone, without edge-min's push against the camera (which would already move the
   // middle of the wall aside), so the wall's coverage is the plain prediction.
   const std::vector<FragmentState> wall = wall_of_boxes(5.0, 4.0);
@@ -230,7 +230,7 @@ TEST(CoverMax, PredictedCoverageOfAWallStaysUnderTheBound) {
   }
 }
 
-TEST(CoverMax, OffPredictsNothingAndPushesNothingExtra) {
+TEST(EdgeMinVisibility, OffPredictsNothingAndPushesNothingExtra) {
   const std::vector<FragmentState> wall = wall_of_boxes(5.0, 4.0);
   EdgeMinParams p;
   p.camera_model = CameraModel::kConstant;
@@ -251,7 +251,7 @@ TEST(CoverMax, OffPredictsNothingAndPushesNothingExtra) {
 // A wall simulated: a 0.6 m cube of 6^3 boxes of 0.1 m coming at 4 m/s from 5 m. The
 // metric's central occlusion, which the bound predicts with discs on a coarse grid, ends near
 // the bound where without control the block covers all the centre.
-TEST(CoverMax, MeasuredCentralOcclusionFollowsTheBound) {
+TEST(EdgeMinVisibility, MeasuredCentralOcclusionFollowsTheBound) {
   Scene scene = test::single_fragment({0.0, 1.6, -5.0}, 0.0);
   scene.object.size_m = 0.6;
   scene.object.splits = 6;
