@@ -1,6 +1,7 @@
 // Output files appear whole or not at all: the fragsim executable, interrupted and rerun. Signals
 // land at a known step (FRAGSIM_TEST_RAISE_AT_STEP, support/signal_at_step.cpp), never after a
-// guessed time. That another process writes the same bytes is in tests/experiments/determinism_test.cpp.
+// guessed time. That another process writes the same bytes is in
+// tests/experiments/determinism_test.cpp.
 
 #include <gtest/gtest.h>
 #include <signal.h>
