@@ -16,24 +16,15 @@
 #include <string>
 
 #include "support/run_fragsim.hpp"
+#include "support/test_files.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using fragsim::test::read_all;
 using fragsim::test::run_fragsim_status;
+using fragsim::test::shell;
 using fragsim::test::UniqueDir;
-
-int shell(const std::string& cmd) {
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 const std::string kBin = FRAGSIM_BINARY;
 const std::string kScenes = std::string(FRAGSIM_DATA_DIR) + "/scenes/";

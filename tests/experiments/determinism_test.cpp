@@ -17,6 +17,7 @@
 #include "report/csv_export.hpp"
 #include "sim/scene_file.hpp"
 #include "support/run_fragsim.hpp"
+#include "support/test_files.hpp"
 
 namespace fragsim {
 namespace {
@@ -158,19 +159,9 @@ TEST(Determinism, FadeOnTheDefaultSceneIsPinned) {
 // ---- Two processes of the executable. ----
 
 namespace fs = std::filesystem;
+using fragsim::test::read_all;
+using fragsim::test::shell;
 using fragsim::test::UniqueDir;
-
-int shell(const std::string& cmd) {
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 const std::string kBin = FRAGSIM_BINARY;
 const std::string kScenes = std::string(FRAGSIM_DATA_DIR) + "/scenes/";

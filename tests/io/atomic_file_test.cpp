@@ -12,30 +12,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/test_files.hpp"
+
 namespace fragsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-std::string read_all(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-int entries(const fs::path& dir) {
-  int n = 0;
-  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++n;
-  return n;
-}
+using fragsim::test::entries;
+using fragsim::test::fresh_dir;
+using fragsim::test::read_all;
 
 // The temporary file of this process's AtomicFile for `target` (the name a SIGKILL leaves).
 fs::path temporary_of(const fs::path& target) {

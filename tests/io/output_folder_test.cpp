@@ -11,22 +11,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "support/test_files.hpp"
+
 namespace fragsim {
 namespace {
 
 namespace fs = std::filesystem;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
+using fragsim::test::fresh_dir;
+using fragsim::test::write_text;
 
 TEST(OutputFolder, IsMadeWithItsParentsOrMustBeAnEmptyFolder) {
   const fs::path base = fresh_dir("fragsim_out_made");
