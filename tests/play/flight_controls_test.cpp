@@ -8,16 +8,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "support/test_scenes.hpp"
+
 namespace fragsim {
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;
+using test::start_pose;
 
-CameraPose start_pose() {
-  CameraPose p;
-  p.eye_m = {0.0, 1.6, 0.0};
-  return p;  // looking down -z
-}
+constexpr double kDt = 1.0 / 60.0;
 
 TEST(FlightControls, AcceleratesAtTheBoundAndStopsAtVc) {
   CameraDef def;  // V_c 3 m/s, player_accel 20 m/s^2

@@ -12,17 +12,14 @@
 #include "play/flight_record.hpp"
 #include "sim/camera_track_file.hpp"
 #include "sim/sampled_camera.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
-constexpr double kDt = 1.0 / 60.0;
+using test::start_pose;
 
-CameraPose start_pose() {
-  CameraPose p;
-  p.eye_m = {0.0, 1.6, 0.0};
-  return p;  // looking down -z
-}
+constexpr double kDt = 1.0 / 60.0;
 
 // A run asks a camera for step k's pose and velocity, then for k + 1's; the steered camera's
 // samples replayed as a track must answer the same, bit for bit.

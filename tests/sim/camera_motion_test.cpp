@@ -7,20 +7,14 @@
 
 #include <limits>
 
+#include "support/test_scenes.hpp"
+
 namespace fragsim {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using test::player_scene;
 
-Scene player_scene() {
-  Scene s;
-  s.camera.mode = CameraMode::kPlayer;
-  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
-  s.camera.look_at_m = {{0.0, 1.2, -10.0}};
-  s.camera.max_speed_mps = 4.0;
-  s.object.centre_m = {0.0, 1.2, -10.0};
-  return s;
-}
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
 TEST(CameraMotion, DeclaredLimitsComeFromThePlayerOnly) {
   Scene s = player_scene();

@@ -9,18 +9,12 @@
 #include <vector>
 
 #include "sim/camera_path.hpp"
+#include "support/test_scenes.hpp"
 
 namespace fragsim {
 namespace {
 
-CameraDef three_point_path() {
-  CameraDef c;
-  c.waypoints_m = {{0.0, 1.6, 0.0}, {0.0, 1.6, -2.0}, {1.5, 1.6, -4.0}};
-  c.look_at_m = {{0.0, 1.2, -10.0}};
-  c.speed_mps = 2.0;
-  c.max_speed_mps = 3.0;
-  return c;
-}
+using test::three_point_path;
 
 std::vector<CameraSample> sample(const CameraMotion& m, double dt, int count) {
   std::vector<CameraSample> out;

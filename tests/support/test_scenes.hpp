@@ -1,6 +1,7 @@
 #pragma once
 // Small hand-made scenes and cameras for the tests: one fragment fired along a known line at a
-// still camera, a square 90-degree camera, a cube fragment's state, and a recorder of every step.
+// still camera, a square 90-degree camera, a player camera, a three-point path, a standing start
+// pose, a cube fragment's state, and a recorder of every step.
 
 #include <cmath>
 #include <string>
@@ -108,6 +109,34 @@ inline RecordedRun run_recorded(const Scene& scene, const std::string& strategy)
   RecordedRun o;
   o.summary = evaluate(scene, strategy, {nullptr, nullptr, false, {&o.rec}}).summary;
   return o;
+}
+
+// A player camera at (0, 1.6, 0) facing an object 10 m down -z, at most 4 m/s.
+inline Scene player_scene() {
+  Scene s;
+  s.camera.mode = CameraMode::kPlayer;
+  s.camera.waypoints_m = {{0.0, 1.6, 0.0}};
+  s.camera.look_at_m = {{0.0, 1.2, -10.0}};
+  s.camera.max_speed_mps = 4.0;
+  s.object.centre_m = {0.0, 1.2, -10.0};
+  return s;
+}
+
+// A path through three waypoints (2 m straight, then 2.5 m to the side) at 2 m/s, bound 3 m/s.
+inline CameraDef three_point_path() {
+  CameraDef c;
+  c.waypoints_m = {{0.0, 1.6, 0.0}, {0.0, 1.6, -2.0}, {1.5, 1.6, -4.0}};
+  c.look_at_m = {{0.0, 1.2, -10.0}};
+  c.speed_mps = 2.0;
+  c.max_speed_mps = 3.0;
+  return c;
+}
+
+// Standing at (0, 1.6, 0), looking down -z: where a flown camera starts.
+inline CameraPose start_pose() {
+  CameraPose p;
+  p.eye_m = {0.0, 1.6, 0.0};
+  return p;
 }
 
 }  // namespace fragsim::test
