@@ -18,11 +18,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "control/strategies/edge_min_strategy.hpp"
 #include "fragsim/control.h"
 #include "sim/camera_motion.hpp"
 #include "sim/explosion.hpp"
 #include "sim/scene_file.hpp"
-#include "strategies/edge_min_strategy.hpp"
 
 namespace {
 

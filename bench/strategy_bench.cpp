@@ -11,12 +11,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "control/strategies/collision_prediction.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 #include "sim/explosion.hpp"
 #include "sim/run.hpp"
 #include "sim/scene_file.hpp"
-#include "strategies/collision_prediction.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
 #include "strategies/scene_strategy.hpp"
 
 namespace {

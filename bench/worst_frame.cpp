@@ -54,12 +54,12 @@
 #include <thread>
 #include <vector>
 
-#include "geometry/work_space.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/strategies/parallel_for.hpp"
 #include "io/atomic_file.hpp"
 #include "sim/run.hpp"
 #include "sim/scene_file.hpp"
 #include "sim/scene_strategies.hpp"
-#include "strategies/parallel_for.hpp"
 #include "strategies/scene_strategy.hpp"
 
 namespace {

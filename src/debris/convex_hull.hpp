@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "geometry/convex_shape.hpp"
+#include "control/geometry/convex_shape.hpp"
 
 namespace fragsim {
 

@@ -7,8 +7,8 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "control/strategies/collision_prediction.hpp"
 #include "sim/run_observer.hpp"
-#include "strategies/collision_prediction.hpp"
 
 namespace fragsim {
 

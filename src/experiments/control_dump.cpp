@@ -4,7 +4,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "api/def_mapping.hpp"
+#include "control/api/def_mapping.hpp"
 
 namespace fragsim {
 

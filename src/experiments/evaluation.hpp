@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 #include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"

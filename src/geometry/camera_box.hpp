@@ -7,8 +7,8 @@
 #include <array>
 #include <cstddef>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
 
 namespace fragsim {
 

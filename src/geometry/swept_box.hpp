@@ -14,10 +14,10 @@
 #include <optional>
 #include <vector>
 
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
 #include "geometry/camera_box.hpp"
 #include "geometry/camera_hull.hpp"
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
 
 namespace fragsim {
 

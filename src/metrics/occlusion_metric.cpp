@@ -9,9 +9,9 @@
 #include <limits>
 #include <numeric>
 
+#include "control/geometry/frustum.hpp"
 #include "geometry/camera_box.hpp"
 #include "geometry/camera_hull.hpp"
-#include "geometry/frustum.hpp"
 
 namespace fragsim {
 

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/frustum.hpp"
+#include "control/geometry/frustum.hpp"
 #include "metrics/run_summary.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"

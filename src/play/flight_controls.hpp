@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -16,8 +16,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/frustum.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/frustum.hpp"
 #include "render/image.hpp"
 
 namespace fragsim {

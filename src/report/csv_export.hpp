@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "control/geometry/camera_pose.hpp"
 #include "experiments/evaluation.hpp"
-#include "geometry/camera_pose.hpp"
 #include "io/output_set.hpp"
 #include "sim/scene.hpp"
 

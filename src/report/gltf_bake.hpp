@@ -15,8 +15,8 @@
 
 #include <Eigen/Core>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
 #include "sim/run_observer.hpp"
 
 namespace fragsim {

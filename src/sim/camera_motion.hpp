@@ -5,9 +5,9 @@
 
 #include <memory>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/strategies/strategy.hpp"
 #include "sim/scene.hpp"
-#include "strategies/strategy.hpp"
 
 namespace fragsim {
 

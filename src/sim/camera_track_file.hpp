@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "control/geometry/camera_pose.hpp"
 #include "geometry/axis_convention.hpp"
-#include "geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

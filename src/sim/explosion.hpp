@@ -5,8 +5,8 @@
 #include <memory>
 #include <vector>
 
+#include "control/geometry/fragment_state.hpp"
 #include "debris/debris_def.hpp"
-#include "geometry/fragment_state.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 #include "sim/scene.hpp"
 
 namespace fragsim {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
 
 namespace fragsim {
 

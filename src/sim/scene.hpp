@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "control/geometry/camera_pose.hpp"
 #include "debris/debris_def.hpp"
 #include "geometry/axis_convention.hpp"
-#include "geometry/camera_pose.hpp"
 #include "strategies/strategy_settings.hpp"
 
 namespace fragsim {

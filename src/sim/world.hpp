@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
 #include "sim/explosion.hpp"
 #include "sim/scene.hpp"
 #include "strategies/scene_strategy.hpp"

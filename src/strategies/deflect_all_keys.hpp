@@ -2,7 +2,7 @@
 // `deflect-all`'s scene keys ([deflect-all]): the library's DeflectAllParams as text, each
 // number's range the library's (kDeflectAllRanges).
 
-#include "strategies/deflect_all_params.hpp"
+#include "control/strategies/deflect_all_params.hpp"
 #include "strategies/param_spec.hpp"
 
 namespace fragsim {

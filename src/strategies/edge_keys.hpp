@@ -2,7 +2,7 @@
 // `edge`'s scene keys ([edge]): the library's EdgeParams as text, each number's range the
 // library's (kEdgeRanges).
 
-#include "strategies/edge_params.hpp"
+#include "control/strategies/edge_params.hpp"
 #include "strategies/param_spec.hpp"
 
 namespace fragsim {

@@ -2,7 +2,7 @@
 // `edge-min`'s scene keys ([edge-min]): the library's EdgeMinParams as text, each number's range
 // the library's (kEdgeMinRanges).
 
-#include "strategies/edge_min_params.hpp"
+#include "control/strategies/edge_min_params.hpp"
 #include "strategies/param_spec.hpp"
 
 namespace fragsim {

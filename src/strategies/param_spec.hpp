@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/frustum.hpp"
+#include "control/geometry/frustum.hpp"
 #include "settings/key.hpp"
 
 namespace fragsim {

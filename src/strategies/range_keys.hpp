@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "control/strategies/param_range.hpp"
 #include "settings/key.hpp"
-#include "strategies/param_range.hpp"
 
 namespace fragsim {
 

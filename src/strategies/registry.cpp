@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <sstream>
 
-#include "strategies/deflect_all_strategy.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
+#include "control/strategies/deflect_all_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 #include "strategies/fade_strategy.hpp"
 #include "strategies/near_plane_strategy.hpp"
 #include "strategies/none_strategy.hpp"

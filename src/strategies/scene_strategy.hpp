@@ -13,8 +13,8 @@
 #include <utility>
 #include <vector>
 
-#include "strategies/predictor.hpp"
-#include "strategies/strategy.hpp"
+#include "control/strategies/predictor.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 

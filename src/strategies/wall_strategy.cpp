@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "geometry/frustum.hpp"
+#include "control/geometry/frustum.hpp"
 
 namespace fragsim {
 

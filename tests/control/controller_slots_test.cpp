@@ -2,7 +2,7 @@
 // until it is removed, never after; a reused slot gets a new generation, so the old id stays dead.
 // The controllers are stand-in addresses: the table stores and returns them, never follows them.
 
-#include "api/controller_slots.hpp"
+#include "control/api/controller_slots.hpp"
 
 #include <gtest/gtest.h>
 

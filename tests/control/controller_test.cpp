@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "control/geometry/frustum.hpp"
+#include "control/strategies/deflect_all_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 #include "fragsim/control.h"
-#include "geometry/frustum.hpp"
-#include "strategies/deflect_all_strategy.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
 
 namespace {
 

@@ -1,16 +1,16 @@
 // The one mapping between the C def and the strategies' parameters (api/def_mapping.hpp): the
 // controller reads defs with it, the defaults function and fragsim's control dump write them.
 
-#include "api/def_mapping.hpp"
+#include "control/api/def_mapping.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstring>
 
-#include "strategies/deflect_all_strategy.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
+#include "control/strategies/deflect_all_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 
 namespace {
 

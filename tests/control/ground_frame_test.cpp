@@ -2,7 +2,7 @@
 // along an axis is a signed permutation that rounds nothing; any other normal a rotation that takes
 // it to +y. Worked by hand: z-up's (x, y, z) is y-up's (x, z, -y).
 
-#include "api/ground_frame.hpp"
+#include "control/api/ground_frame.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // reaches the hook with its size, alignment and user pointer; a NULL from the hook is
 // std::bad_alloc; without a hook the C++ runtime's new and delete serve.
 
-#include "api/hook_resource.hpp"
+#include "control/api/hook_resource.hpp"
 
 #include <gtest/gtest.h>
 

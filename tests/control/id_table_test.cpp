@@ -2,7 +2,7 @@
 // clear empties the table without shrinking it, and growth keeps the ids. Capacities by hand: 16
 // slots at least, doubled until at most half full.
 
-#include "api/id_table.hpp"
+#include "control/api/id_table.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // fragment's mass and numbers, a camera's pose and constants named with their prefix, a def's
 // allocator pair, and the warnings a legal camera earns.
 
-#include "api/input_checks.hpp"
+#include "control/api/input_checks.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // fragments listed once, guarded and deferred summed, rejected_cheaply the least; and nothing of a
 // join is left for the next. Numbers by hand.
 
-#include "api/joint_push.hpp"
+#include "control/api/joint_push.hpp"
 
 #include <gtest/gtest.h>
 

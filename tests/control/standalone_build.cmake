@@ -7,7 +7,8 @@
 #
 # Every configure runs under standalone_guard.cmake, which fails it if anything beyond Eigen (and
 # Threads, for the thread test) is looked for. The built shared library must need nothing but
-# the C and C++ runtimes, and its sources must see no include folder but its own and Eigen's.
+# the C and C++ runtimes, and its sources must see no include folder but its own and Eigen's
+# (the library is built from a copy of its folder with nothing beside it).
 # With DUMPS (dumps of `fragsim run --dump-control`, joined by "|"), the C replay program is
 # built against each standalone install (gcc's and clang's) and must reproduce the tool's
 # forces bit for bit: the standalone build keeps -ffp-contract=off.
@@ -48,7 +49,8 @@ function(check_needed library)
   message(STATUS "${library} needs ${needed}")
 endfunction()
 
-# Every include folder the library's sources are compiled with: its own, or Eigen's.
+# Every include folder the library's sources are compiled with: its copy's parent (which holds the
+# copy alone), its include/, or Eigen's.
 function(check_include_dirs build_dir)
   file(READ ${build_dir}/compile_commands.json commands)
   string(JSON count LENGTH "${commands}")
@@ -58,7 +60,7 @@ function(check_include_dirs build_dir)
     string(REGEX MATCHALL "(-I|-isystem )[^ ]+" dirs "${command}")
     foreach(dir ${dirs})
       string(REGEX REPLACE "^(-I|-isystem )" "" dir "${dir}")
-      string(FIND "${dir}" "${SOURCE_DIR}" at)
+      string(FIND "${dir}" "${ALONE_DIR}" at)
       if(NOT at EQUAL 0 AND NOT dir MATCHES "eigen3$")
         message(FATAL_ERROR "the library is compiled with the include folder ${dir}")
       endif()
@@ -69,7 +71,7 @@ endfunction()
 # src/control alone with one compiler: configure under the guard, build, check, install to
 # ${WORK_DIR}/${name}-prefix, and replay the tool's dumps against the install.
 function(build_library_alone name cxx cc)
-  run("configure src/control alone (${name})" ${CMAKE_COMMAND} -S ${SOURCE_DIR}
+  run("configure src/control alone (${name})" ${CMAKE_COMMAND} -S ${ALONE_DIR}/control
     -B ${WORK_DIR}/${name} -DCMAKE_CXX_COMPILER=${cxx} -DCMAKE_BUILD_TYPE=Release
     -DFRAGSIM_WERROR=ON -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "-DCMAKE_CXX_FLAGS=${ARGN}"
     -DCMAKE_PROJECT_TOP_LEVEL_INCLUDES=${GUARD})
@@ -95,6 +97,13 @@ function(build_library_alone name cxx cc)
 endfunction()
 
 file(REMOVE_RECURSE ${WORK_DIR})
+# A copy of the folder with nothing beside it: the library's include root is its folder's parent,
+# so in the tree it could see the tool's folders; here there is nothing else to see.
+set(ALONE_DIR ${WORK_DIR}/alone)
+file(COPY ${SOURCE_DIR} DESTINATION ${ALONE_DIR})
+if(NOT EXISTS ${ALONE_DIR}/control/CMakeLists.txt)
+  message(FATAL_ERROR "standalone_build.cmake: SOURCE_DIR must be the library's folder, control")
+endif()
 # gcc's with debug information (which changes no instruction): Control.Library.AbiStable reads
 # the ABI from this install, kept when the rest of the work folder is removed.
 build_library_alone(gcc ${CXX} ${CC} -g)

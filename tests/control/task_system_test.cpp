@@ -2,7 +2,7 @@
 // task systems: one that runs every range at once, and ones that misbehave (skip a range, run one
 // on a worker that does not exist), which must break the step rather than pass it as whole.
 
-#include "api/task_system.hpp"
+#include "control/api/task_system.hpp"
 
 #include <gtest/gtest.h>
 

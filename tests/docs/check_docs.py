@@ -5,7 +5,7 @@ Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
   ROOT     the repository's root
   FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
   --only   run only these checks: readme, outside, links, keys, folders, includes, mirror,
-           pages, issues, changelog, offline, hooks
+           pages, issues, changelog, offline, hooks, roots
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
@@ -18,6 +18,10 @@ Fails (exit 1, one line per finding) when:
             under src/ is not listed;
   includes  a file under src/ includes a folder of its own layer or a higher one (the "## Layers"
             table of docs/architecture.md), or ODE or SDL outside the folder that owns it;
+  roots     an include names a file another way than by its path from an include root (src/,
+            src/control/include/, and tests/ for the tests): a path relative to the including
+            file, or the library's files without control/; or a relative path exists under two
+            roots; or a CMake file makes src/control an include root again;
   mirror    a source src/D/X.cpp has no test named after it, tests/D/X_test.cpp or
             tests/D/X_<aspect>_test.cpp (src/control/D/ is tested in tests/D/, its api/ in
             tests/control/ or, as C programs, tests/control/api/), unless MIRROR_UNTESTED lists it
@@ -356,15 +360,78 @@ def unit_of(root, path):
     return "src/" + parts[0]
 
 
+INCLUDE_ROOTS = ("src", "src/control/include")
+
+
 def resolve(root, including_dir, target):
-    """The file an #include "target" names, as the build's include roots find it."""
-    for base in (including_dir, os.path.join(root, "src", "control"),
-                 os.path.join(root, "src", "control", "include"), os.path.join(root, "src"),
-                 os.path.join(root, "include")):
+    """The file an #include "target" names, as the compiler finds it: beside the including file
+    first, then under the include roots."""
+    for base in (including_dir,) + tuple(os.path.join(root, r) for r in INCLUDE_ROOTS):
         p = os.path.normpath(os.path.join(base, target))
         if os.path.isfile(p):
             return p
     return None
+
+
+def tracked(root, *patterns):
+    out = subprocess.run(["git", "-C", root, "ls-files", "--"] + list(patterns),
+                         capture_output=True, text=True, check=True).stdout.split()
+    return [f for f in out if os.path.isfile(os.path.join(root, f))]
+
+
+def check_roots(root):
+    """One spelling per file: every include is the file's path from an include root."""
+    quoted = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
+    sources = [f for f in tracked(root, "src", "tests", "bench")
+               if f.endswith((".cpp", ".hpp", ".h", ".c"))
+               and not f.startswith(("tests/control/include_check/", "tests/control/api/"))]
+    for f in sources:
+        roots = INCLUDE_ROOTS + (("tests",) if f.startswith(("tests/", "bench/")) else ())
+        here = os.path.dirname(os.path.join(root, f))
+        for n, line in enumerate(read(os.path.join(root, f)).split("\n"), 1):
+            m = quoted.match(line)
+            if not m:
+                continue
+            name = m.group(1)
+            found = [r for r in roots if os.path.isfile(os.path.join(root, r, name))]
+            beside = os.path.normpath(os.path.join(here, name))
+            if len(found) > 1:
+                fail("roots", f"{f}:{n}: \"{name}\" is under {' and '.join(found)}")
+            elif found:
+                if os.path.isfile(beside) and beside != os.path.normpath(
+                        os.path.join(root, found[0], name)):
+                    fail("roots", f"{f}:{n}: \"{name}\" is also a file beside {f}")
+            elif os.path.isfile(beside):
+                inside_src = os.path.commonpath([beside, os.path.join(root, "src")]) == \
+                    os.path.join(root, "src")
+                if inside_src or not f.startswith(("tests/", "bench/")):
+                    spelled = os.path.relpath(beside, os.path.join(root, "src"))
+                    fail("roots", f"{f}:{n}: \"{name}\" is relative to its file; write "
+                                  f"\"{spelled}\"")
+            else:
+                fail("roots", f"{f}:{n}: \"{name}\" is under no include root")
+    names = {}
+    for r in INCLUDE_ROOTS + ("tests",):
+        for f in tracked(root, r):
+            if not f.endswith((".hpp", ".h")):
+                continue
+            rel = os.path.relpath(f, r)
+            names.setdefault(rel, []).append(r)
+    for rel, rs in sorted(names.items()):
+        if len(rs) > 1:
+            fail("roots", f"{rel} is a path under {' and '.join(rs)}: one include path, two files")
+    cmake_files = tracked(root, "CMakeLists.txt", "*CMakeLists.txt", "*.cmake")
+    block = re.compile(r"target_include_directories\(([^)]*)\)", re.S)
+    for f in cmake_files:
+        text = read(os.path.join(root, f))
+        for m in block.finditer(text):
+            n = text[:m.start()].count("\n") + 1
+            args = m.group(1)
+            if re.search(r"src/control(?![/\w])", args) or (
+                    f == "src/control/CMakeLists.txt" and
+                    re.search(r"\$\{CMAKE_CURRENT_SOURCE_DIR\}(?![/\w])", args)):
+                fail("roots", f"{f}:{n}: makes src/control an include root; its files are "
+                              "included as control/... from src/")
 
 
 def check_includes(root):
@@ -703,6 +770,7 @@ def main(argv):
         "offline": lambda: check_offline(root),
         "hooks": lambda: check_hooks(root),
         "mirror": lambda: check_mirror(root),
+        "roots": lambda: check_roots(root),
     }
     for name in only or checks:
         if name not in checks:

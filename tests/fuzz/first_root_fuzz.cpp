@@ -40,7 +40,7 @@
 #include <optional>
 #include <vector>
 
-#include "geometry/first_root.hpp"
+#include "control/geometry/first_root.hpp"
 
 namespace {
 

@@ -24,8 +24,8 @@
 #include <unsupported/Eigen/Polynomials>
 #include <vector>
 
-#include "geometry/first_root.hpp"
-#include "strategies/collision_prediction.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/strategies/collision_prediction.hpp"
 
 namespace fragsim {
 namespace {

@@ -1,4 +1,4 @@
-#include "geometry/first_root.hpp"
+#include "control/geometry/first_root.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "geometry/frustum.hpp"
+#include "control/geometry/frustum.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 
 namespace fragsim {
 namespace {

@@ -1,4 +1,4 @@
-#include "geometry/parabola.hpp"
+#include "control/geometry/parabola.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "geometry/time_to_plane.hpp"
+#include "control/geometry/time_to_plane.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <optional>
 #include <random>
 
-#include "strategies/lanes.hpp"
+#include "control/strategies/lanes.hpp"
 
 namespace fragsim {
 namespace {

@@ -1,6 +1,6 @@
 // The sums over a 3-vector in their one order, (x + y) + z: a case whose two associations differ
 // by a rounding, and a norm that is exact.
-#include "geometry/vec3_sums.hpp"
+#include "control/geometry/vec3_sums.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // resource it was built with, with the element's size and alignment, and stays there when the
 // vector is copied or assigned, as a controller's containers must (all of a controller's memory
 // comes through the game's hook).
-#include "memory/memory_resource.hpp"
+#include "control/memory/memory_resource.hpp"
 
 #include <gtest/gtest.h>
 

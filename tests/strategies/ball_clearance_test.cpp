@@ -4,7 +4,7 @@
 // surface, paths reaching it at the horizon. And the batched test must answer exactly as the
 // single one.
 
-#include "strategies/ball_clearance.hpp"
+#include "control/strategies/ball_clearance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,8 +14,8 @@
 #include <random>
 #include <vector>
 
-#include "geometry/first_root.hpp"
-#include "strategies/collision_prediction.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/strategies/collision_prediction.hpp"
 #include "support/random_paths.hpp"
 
 namespace fragsim {

@@ -3,7 +3,7 @@
 // random paths (fixed seeds) built to graze the box's faces. And the batched test must answer
 // exactly as the single one.
 
-#include "strategies/box_clearance.hpp"
+#include "control/strategies/box_clearance.hpp"
 
 #include <gtest/gtest.h>
 

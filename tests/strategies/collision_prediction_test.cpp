@@ -1,4 +1,4 @@
-#include "strategies/collision_prediction.hpp"
+#include "control/strategies/collision_prediction.hpp"
 
 #include <gtest/gtest.h>
 

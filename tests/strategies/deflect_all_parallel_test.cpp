@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "control/strategies/deflect_all_strategy.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/deflect_all_strategy.hpp"
 #include "strategies/scene_strategy.hpp"
 #include "support/random_ranges_for.hpp"
 #include "support/shipped_scene.hpp"

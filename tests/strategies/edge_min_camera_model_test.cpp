@@ -16,7 +16,7 @@
 #include <random>
 #include <vector>
 
-#include "strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 
 namespace fragsim {
 namespace {

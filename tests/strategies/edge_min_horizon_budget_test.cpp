@@ -12,8 +12,8 @@
 #include <limits>
 #include <vector>
 
+#include "control/strategies/edge_min_strategy.hpp"
 #include "fragsim/control.h"
-#include "strategies/edge_min_strategy.hpp"
 
 namespace fragsim {
 namespace {

@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "control/strategies/edge_min_strategy.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/edge_min_strategy.hpp"
 #include "strategies/scene_strategy.hpp"
 #include "support/random_ranges_for.hpp"
 #include "support/shipped_scene.hpp"

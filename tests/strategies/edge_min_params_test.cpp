@@ -1,6 +1,6 @@
 // edge-min's keys as a scene file writes them: the turn-rate bound may be inf (no bound).
 
-#include "strategies/edge_min_params.hpp"
+#include "control/strategies/edge_min_params.hpp"
 
 #include <gtest/gtest.h>
 

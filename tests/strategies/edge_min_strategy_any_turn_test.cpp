@@ -18,7 +18,7 @@
 #include <limits>
 #include <random>
 
-#include "strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 
 namespace fragsim {
 namespace {

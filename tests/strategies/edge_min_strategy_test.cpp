@@ -2,7 +2,7 @@
 // body 0.3 x 0.2 x 0.3 m, margin 0.05 m, so the protected box reaches 0.2 m + r to the sides and
 // 0.15 m + r up and down (r = 0.0866 m, the 0.1 m box's bounding radius).
 
-#include "strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 
 #include <gtest/gtest.h>
 

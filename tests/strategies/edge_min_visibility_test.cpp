@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "control/strategies/edge_min_strategy.hpp"
 #include "experiments/evaluation.hpp"
 #include "io/input_error.hpp"
 #include "settings/key.hpp"
 #include "sim/scene_file.hpp"
-#include "strategies/edge_min_strategy.hpp"
 #include "strategies/registry.hpp"
 #include "support/test_scenes.hpp"
 

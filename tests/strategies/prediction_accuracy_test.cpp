@@ -5,9 +5,9 @@
 
 #include <array>
 
+#include "control/strategies/collision_prediction.hpp"
 #include "sim/scene_strategies.hpp"
 #include "sim/simulation.hpp"
-#include "strategies/collision_prediction.hpp"
 #include "support/test_scenes.hpp"
 
 namespace fragsim {

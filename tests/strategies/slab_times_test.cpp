@@ -1,4 +1,4 @@
-#include "strategies/slab_times.hpp"
+#include "control/strategies/slab_times.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include "geometry/first_root.hpp"
+#include "control/geometry/first_root.hpp"
 
 namespace fragsim {
 namespace {

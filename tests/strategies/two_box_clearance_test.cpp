@@ -3,7 +3,7 @@
 // own look-ahead. Hand cases, then random fragments (fixed seeds) in a moving, rotated frame; and
 // the wide lanes, the narrow ones and the chunked runs must answer alike.
 
-#include "strategies/two_box_clearance.hpp"
+#include "control/strategies/two_box_clearance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 #include "support/random_paths.hpp"
 
 namespace fragsim {

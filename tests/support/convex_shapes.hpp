@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/convex_shape.hpp"
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/convex_shape.hpp"
+#include "control/geometry/fragment_state.hpp"
 
 namespace fragsim::test {
 

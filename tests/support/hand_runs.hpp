@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "geometry/fragment_state.hpp"
+#include "control/geometry/fragment_state.hpp"
 #include "metrics/trajectory_record.hpp"
 #include "sim/run_observer.hpp"
 

@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "geometry/first_root.hpp"
-#include "geometry/parabola.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/geometry/parabola.hpp"
 
 namespace fragsim::test {
 

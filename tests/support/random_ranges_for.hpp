@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "strategies/parallel_for.hpp"
+#include "control/strategies/parallel_for.hpp"
 
 namespace fragsim::test {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "control/geometry/camera_pose.hpp"
 #include "experiments/evaluation.hpp"
-#include "geometry/camera_pose.hpp"
 #include "sim/run_observer.hpp"
 #include "sim/scene.hpp"
 

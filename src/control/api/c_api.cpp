@@ -8,13 +8,13 @@
 #include <limits>
 #include <new>
 
-#include "api/controller.hpp"
-#include "api/controller_slots.hpp"
-#include "api/def_mapping.hpp"
-#include "api/fragment_io.hpp"
-#include "api/input_checks.hpp"
+#include "control/api/controller.hpp"
+#include "control/api/controller_slots.hpp"
+#include "control/api/def_mapping.hpp"
+#include "control/api/fragment_io.hpp"
+#include "control/api/input_checks.hpp"
+#include "control/geometry/frustum.hpp"
 #include "fragsim/control.h"
-#include "geometry/frustum.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "api/controller.hpp"
+#include "control/api/controller.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,12 +8,12 @@
 #include <new>
 #include <span>
 
-#include "api/def_mapping.hpp"
-#include "api/fragment_io.hpp"
-#include "api/ground_frame.hpp"
-#include "strategies/deflect_all_strategy.hpp"
-#include "strategies/edge_min_strategy.hpp"
-#include "strategies/edge_strategy.hpp"
+#include "control/api/def_mapping.hpp"
+#include "control/api/fragment_io.hpp"
+#include "control/api/ground_frame.hpp"
+#include "control/strategies/deflect_all_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 
 namespace fragsim::control {
 namespace {

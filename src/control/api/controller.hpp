@@ -27,15 +27,15 @@
 #include <memory>
 #include <vector>
 
-#include "api/hook_resource.hpp"
-#include "api/id_table.hpp"
-#include "api/input_checks.hpp"
-#include "api/joint_push.hpp"
-#include "api/task_system.hpp"
+#include "control/api/hook_resource.hpp"
+#include "control/api/id_table.hpp"
+#include "control/api/input_checks.hpp"
+#include "control/api/joint_push.hpp"
+#include "control/api/task_system.hpp"
+#include "control/geometry/fragment_state.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/strategy.hpp"
 #include "fragsim/control.h"
-#include "geometry/fragment_state.hpp"
-#include "memory/memory_resource.hpp"
-#include "strategies/strategy.hpp"
 
 namespace fragsim {
 class EdgeStrategy;

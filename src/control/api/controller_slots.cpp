@@ -1,4 +1,4 @@
-#include "api/controller_slots.hpp"
+#include "control/api/controller_slots.hpp"
 
 #include <array>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "api/def_mapping.hpp"
+#include "control/api/def_mapping.hpp"
 
 #include <cstddef>
 

@@ -13,10 +13,10 @@
 #include <optional>
 #include <string_view>
 
+#include "control/strategies/deflect_all_params.hpp"
+#include "control/strategies/edge_min_params.hpp"
+#include "control/strategies/edge_params.hpp"
 #include "fragsim/control.h"
-#include "strategies/deflect_all_params.hpp"
-#include "strategies/edge_min_params.hpp"
-#include "strategies/edge_params.hpp"
 
 namespace fragsim::control {
 

@@ -1,8 +1,8 @@
-#include "api/ground_frame.hpp"
+#include "control/api/ground_frame.hpp"
 
 #include <cmath>
 
-#include "geometry/vec3_sums.hpp"
+#include "control/geometry/vec3_sums.hpp"
 
 namespace fragsim::control {
 

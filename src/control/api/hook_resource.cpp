@@ -1,4 +1,4 @@
-#include "api/hook_resource.hpp"
+#include "control/api/hook_resource.hpp"
 
 #include <new>
 

@@ -10,8 +10,8 @@
 
 #include <cstddef>
 
+#include "control/memory/memory_resource.hpp"
 #include "fragsim/control.h"
-#include "memory/memory_resource.hpp"
 
 namespace fragsim::control {
 

@@ -1,4 +1,4 @@
-#include "api/id_table.hpp"
+#include "control/api/id_table.hpp"
 
 #include <algorithm>
 

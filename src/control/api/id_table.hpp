@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
+#include "control/memory/memory_resource.hpp"
 
 namespace fragsim::control {
 

@@ -1,4 +1,4 @@
-#include "api/input_checks.hpp"
+#include "control/api/input_checks.hpp"
 
 #include <array>
 #include <cmath>
@@ -7,11 +7,11 @@
 #include <limits>
 #include <span>
 
-#include "api/def_mapping.hpp"
-#include "strategies/deflect_all_params.hpp"
-#include "strategies/edge_min_params.hpp"
-#include "strategies/edge_params.hpp"
-#include "strategies/param_range.hpp"
+#include "control/api/def_mapping.hpp"
+#include "control/strategies/deflect_all_params.hpp"
+#include "control/strategies/edge_min_params.hpp"
+#include "control/strategies/edge_params.hpp"
+#include "control/strategies/param_range.hpp"
 
 namespace fragsim::control {
 

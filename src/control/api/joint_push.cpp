@@ -1,11 +1,11 @@
-#include "api/joint_push.hpp"
+#include "control/api/joint_push.hpp"
 
 #include <algorithm>
 #include <new>
 
+#include "control/geometry/vec3_sums.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 #include "fragsim/control.h"
-#include "geometry/vec3_sums.hpp"
-#include "strategies/edge_min_strategy.hpp"
 
 namespace fragsim::control {
 namespace {

@@ -24,9 +24,9 @@
 #include <span>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
-#include "strategies/edge_min_params.hpp"
-#include "strategies/strategy.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/edge_min_params.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 class EdgeMinStrategy;

@@ -1,4 +1,4 @@
-#include "api/task_system.hpp"
+#include "control/api/task_system.hpp"
 
 #include <algorithm>
 

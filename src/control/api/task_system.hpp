@@ -8,8 +8,8 @@
 #include <atomic>
 #include <cstdint>
 
+#include "control/strategies/parallel_for.hpp"
 #include "fragsim/control.h"
-#include "strategies/parallel_for.hpp"
 
 namespace fragsim::control {
 

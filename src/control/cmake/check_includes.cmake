@@ -2,8 +2,10 @@
 #   cmake -DFRAGSIM_CONTROL_ROOT=<folder> -P check_includes.cmake     (or include() it with
 #   FRAGSIM_CONTROL_ROOT set, as src/control/CMakeLists.txt does at configure)
 #
-# `#include "X"` must name a file inside the folder: next to the including file, under the
-# folder's root or under its include/ (the only include roots the library is compiled with).
+# `#include "X"` names the file's path from the folder's parent, starting with the folder's own
+# name (control/geometry/frustum.hpp), or a public header under include/ (fragsim/control.h): one
+# spelling for each file, the one the tool writes too. A path relative to the including file is
+# refused even when it finds a file of the library.
 # `#include <X>` is for the standard library and Eigen: it must not name a file of the tool's
 # folders beside this one, where it would compile inside fragsim and nowhere else. Each offence
 # is reported as file:line, and all of them at once.
@@ -11,6 +13,7 @@
 function(fragsim_control_check_includes root)
   cmake_path(SET root NORMALIZE "${root}")
   cmake_path(GET root PARENT_PATH outside)
+  cmake_path(GET root FILENAME folder)
   file(GLOB_RECURSE files "${root}/*.cpp" "${root}/*.hpp" "${root}/*.h" "${root}/*.c")
   set(offences "")
   foreach(file ${files})
@@ -24,8 +27,17 @@ function(fragsim_control_check_includes root)
       endif()
       set(quote "${CMAKE_MATCH_1}")
       set(name "${CMAKE_MATCH_2}")
+      file(RELATIVE_PATH where "${root}" "${file}")
+      if(quote STREQUAL "<")
+        cmake_path(APPEND outside "${name}" OUTPUT_VARIABLE beside)
+        cmake_path(IS_PREFIX root "${beside}" NORMALIZE inside)
+        if(EXISTS "${beside}" AND NOT inside)
+          string(APPEND offences "\n  ${where}:${number}: #include <${name}> is the tool's, outside the library's folder")
+        endif()
+        continue()
+      endif()
       set(found "")
-      foreach(base "${dir}" "${root}" "${root}/include")
+      foreach(base "${outside}" "${root}/include")
         cmake_path(APPEND base "${name}" OUTPUT_VARIABLE candidate)
         cmake_path(NORMAL_PATH candidate)
         if(EXISTS "${candidate}" AND NOT IS_DIRECTORY "${candidate}")
@@ -37,16 +49,23 @@ function(fragsim_control_check_includes root)
       if(found)
         cmake_path(IS_PREFIX root "${found}" NORMALIZE inside)
       endif()
-      file(RELATIVE_PATH where "${root}" "${file}")
-      if(quote STREQUAL "\"" AND NOT inside)
+      cmake_path(APPEND dir "${name}" OUTPUT_VARIABLE beside)
+      cmake_path(NORMAL_PATH beside)
+      cmake_path(IS_PREFIX root "${beside}" NORMALIZE beside_inside)
+      if(inside)
+        continue()
+      elseif(EXISTS "${beside}" AND beside_inside)
+        file(RELATIVE_PATH from_parent "${outside}" "${beside}")
+        string(APPEND offences "\n  ${where}:${number}: #include \"${name}\" is relative to its file; write \"${from_parent}\"")
+      elseif(found OR EXISTS "${beside}")
         string(APPEND offences "\n  ${where}:${number}: #include \"${name}\" is not in the library's folder")
-      elseif(quote STREQUAL "<" AND NOT inside AND EXISTS "${outside}/${name}")
-        string(APPEND offences "\n  ${where}:${number}: #include <${name}> is the tool's, outside the library's folder")
+      else()
+        string(APPEND offences "\n  ${where}:${number}: #include \"${name}\" names no file of the library (write its path from ${folder}/)")
       endif()
     endforeach()
   endforeach()
   if(offences)
-    message(FATAL_ERROR "The controller library (${root}) includes outside its folder:${offences}\n"
+    message(FATAL_ERROR "The controller library (${root}) has includes outside its folder or not named from it:${offences}\n"
       "Move what it needs into the folder, or keep it out of the library.")
   endif()
 endfunction()

@@ -5,8 +5,8 @@
 
 #include <Eigen/Core>
 
-#include "geometry/frustum.hpp"
-#include "geometry/vec3_sums.hpp"
+#include "control/geometry/frustum.hpp"
+#include "control/geometry/vec3_sums.hpp"
 
 namespace fragsim {
 

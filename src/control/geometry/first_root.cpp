@@ -1,4 +1,4 @@
-#include "geometry/first_root.hpp"
+#include "control/geometry/first_root.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,8 +12,8 @@
 #include <tuple>
 #include <vector>
 
-#include "geometry/work_space.hpp"
-#include "memory/memory_resource.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/memory/memory_resource.hpp"
 
 namespace fragsim {
 namespace {

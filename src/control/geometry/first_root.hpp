@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
+#include "control/memory/memory_resource.hpp"
 
 namespace fragsim {
 

@@ -3,7 +3,7 @@
 
 #include <Eigen/Core>
 
-#include "geometry/convex_shape.hpp"
+#include "control/geometry/convex_shape.hpp"
 
 namespace fragsim {
 

@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "geometry/camera_pose.hpp"
+#include "control/geometry/camera_pose.hpp"
 
 namespace fragsim {
 

@@ -14,7 +14,7 @@
 #include <limits>
 #include <optional>
 
-#include "geometry/parabola.hpp"
+#include "control/geometry/parabola.hpp"
 
 namespace fragsim {
 

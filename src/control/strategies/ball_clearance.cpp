@@ -1,11 +1,11 @@
-#include "strategies/ball_clearance.hpp"
+#include "control/strategies/ball_clearance.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "geometry/work_space.hpp"
-#include "strategies/cheap_rejection.hpp"
-#include "strategies/lanes.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/strategies/cheap_rejection.hpp"
+#include "control/strategies/lanes.hpp"
 
 namespace fragsim {
 namespace {

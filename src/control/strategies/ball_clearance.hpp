@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <span>
 
-#include "geometry/parabola.hpp"
-#include "memory/memory_resource.hpp"
+#include "control/geometry/parabola.hpp"
+#include "control/memory/memory_resource.hpp"
 
 namespace fragsim {
 

@@ -1,12 +1,12 @@
-#include "strategies/box_clearance.hpp"
+#include "control/strategies/box_clearance.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "geometry/vec3_sums.hpp"
-#include "strategies/cheap_rejection.hpp"
-#include "strategies/lane_ops.hpp"
-#include "strategies/lanes.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/strategies/cheap_rejection.hpp"
+#include "control/strategies/lane_ops.hpp"
+#include "control/strategies/lanes.hpp"
 
 namespace fragsim {
 namespace {

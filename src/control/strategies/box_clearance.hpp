@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <span>
 
-#include "geometry/fragment_state.hpp"
-#include "geometry/parabola.hpp"
-#include "memory/memory_resource.hpp"
+#include "control/geometry/fragment_state.hpp"
+#include "control/geometry/parabola.hpp"
+#include "control/memory/memory_resource.hpp"
 
 namespace fragsim {
 

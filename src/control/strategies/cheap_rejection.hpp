@@ -18,8 +18,8 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "strategies/lane_ops.hpp"
-#include "strategies/lanes.hpp"
+#include "control/strategies/lane_ops.hpp"
+#include "control/strategies/lanes.hpp"
 
 namespace fragsim::rejection {
 

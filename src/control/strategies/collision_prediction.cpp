@@ -1,13 +1,13 @@
-#include "strategies/collision_prediction.hpp"
+#include "control/strategies/collision_prediction.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "geometry/time_to_plane.hpp"
-#include "geometry/vec3_sums.hpp"
-#include "geometry/work_space.hpp"
-#include "strategies/lanes.hpp"
+#include "control/geometry/time_to_plane.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/strategies/lanes.hpp"
 
 namespace fragsim {
 

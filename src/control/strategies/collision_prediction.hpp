@@ -7,13 +7,13 @@
 #include <span>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/first_root.hpp"
-#include "geometry/fragment_state.hpp"
-#include "geometry/parabola.hpp"
-#include "memory/memory_resource.hpp"
-#include "strategies/ball_clearance.hpp"
-#include "strategies/edge_params.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/geometry/fragment_state.hpp"
+#include "control/geometry/parabola.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/ball_clearance.hpp"
+#include "control/strategies/edge_params.hpp"
 
 namespace fragsim {
 

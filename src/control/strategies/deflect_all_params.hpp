@@ -2,7 +2,7 @@
 // `deflect-all`'s parameters and their legal values (the tool's scene keys, [deflect-all], are
 // src/strategies/deflect_all_keys.hpp).
 
-#include "strategies/param_range.hpp"
+#include "control/strategies/param_range.hpp"
 
 namespace fragsim {
 

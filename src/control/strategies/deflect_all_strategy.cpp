@@ -1,11 +1,11 @@
-#include "strategies/deflect_all_strategy.hpp"
+#include "control/strategies/deflect_all_strategy.hpp"
 
 #include <algorithm>
 #include <cstdint>
 
-#include "geometry/vec3_sums.hpp"
-#include "strategies/force_cap.hpp"
-#include "strategies/parallel_ranges.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/strategies/force_cap.hpp"
+#include "control/strategies/parallel_ranges.hpp"
 
 namespace fragsim {
 namespace {

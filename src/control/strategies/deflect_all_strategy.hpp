@@ -5,9 +5,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
-#include "strategies/deflect_all_params.hpp"
-#include "strategies/strategy.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/deflect_all_params.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <limits>
 
-#include "strategies/param_range.hpp"
+#include "control/strategies/param_range.hpp"
 
 namespace fragsim {
 

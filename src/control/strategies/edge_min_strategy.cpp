@@ -1,4 +1,4 @@
-#include "strategies/edge_min_strategy.hpp"
+#include "control/strategies/edge_min_strategy.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,14 +10,14 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/first_root.hpp"
-#include "geometry/parabola.hpp"
-#include "geometry/time_to_plane.hpp"
-#include "geometry/vec3_sums.hpp"
-#include "strategies/force_cap.hpp"
-#include "strategies/intervals.hpp"
-#include "strategies/parallel_ranges.hpp"
-#include "strategies/slab_times.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/geometry/parabola.hpp"
+#include "control/geometry/time_to_plane.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/strategies/force_cap.hpp"
+#include "control/strategies/intervals.hpp"
+#include "control/strategies/parallel_ranges.hpp"
+#include "control/strategies/slab_times.hpp"
 
 namespace fragsim {
 namespace {

@@ -45,11 +45,11 @@
 #include <utility>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
-#include "strategies/edge_min_params.hpp"
-#include "strategies/occlusion_bound.hpp"
-#include "strategies/strategy.hpp"
-#include "strategies/two_box_clearance.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/edge_min_params.hpp"
+#include "control/strategies/occlusion_bound.hpp"
+#include "control/strategies/strategy.hpp"
+#include "control/strategies/two_box_clearance.hpp"
 
 namespace fragsim {
 

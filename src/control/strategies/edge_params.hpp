@@ -2,8 +2,8 @@
 // `edge`'s parameters (the thesis, docs/method.md section 3) and their legal values (the tool's
 // scene keys, [edge], are src/strategies/edge_keys.hpp).
 
-#include "strategies/param_range.hpp"
-#include "strategies/predictor.hpp"
+#include "control/strategies/param_range.hpp"
+#include "control/strategies/predictor.hpp"
 
 namespace fragsim {
 

@@ -1,11 +1,11 @@
-#include "strategies/edge_strategy.hpp"
+#include "control/strategies/edge_strategy.hpp"
 
 #include <algorithm>
 #include <limits>
 
-#include "geometry/vec3_sums.hpp"
-#include "geometry/work_space.hpp"
-#include "strategies/force_cap.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/strategies/force_cap.hpp"
 
 namespace fragsim {
 namespace {

@@ -8,10 +8,10 @@
 #include <span>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
-#include "strategies/collision_prediction.hpp"
-#include "strategies/edge_params.hpp"
-#include "strategies/strategy.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/collision_prediction.hpp"
+#include "control/strategies/edge_params.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 

@@ -5,8 +5,8 @@
 #include <Eigen/Core>
 #include <cmath>
 
-#include "geometry/vec3_sums.hpp"
-#include "strategies/strategy.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 

@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "strategies/lanes.hpp"
+#include "control/strategies/lanes.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define FRAGSIM_WIDE_LANES 1

@@ -1,4 +1,4 @@
-#include "strategies/occlusion_bound.hpp"
+#include "control/strategies/occlusion_bound.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <tuple>
 #include <utility>
 
-#include "geometry/frustum.hpp"
-#include "geometry/vec3_sums.hpp"
+#include "control/geometry/frustum.hpp"
+#include "control/geometry/vec3_sums.hpp"
 
 namespace fragsim {
 namespace {

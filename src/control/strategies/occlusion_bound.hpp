@@ -39,9 +39,9 @@
 #include <utility>
 #include <vector>
 
-#include "memory/memory_resource.hpp"
-#include "strategies/edge_min_params.hpp"
-#include "strategies/strategy.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/edge_min_params.hpp"
+#include "control/strategies/strategy.hpp"
 
 namespace fragsim {
 

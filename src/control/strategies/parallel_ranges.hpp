@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "strategies/parallel_for.hpp"
+#include "control/strategies/parallel_for.hpp"
 
 namespace fragsim {
 

@@ -1,11 +1,11 @@
-#include "strategies/slab_times.hpp"
+#include "control/strategies/slab_times.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstring>
 
-#include "geometry/first_root.hpp"
-#include "strategies/lane_ops.hpp"
+#include "control/geometry/first_root.hpp"
+#include "control/strategies/lane_ops.hpp"
 
 namespace fragsim {
 namespace {

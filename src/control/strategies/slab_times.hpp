@@ -13,8 +13,8 @@
 // list_real_roots itself only where a bound needs its rarer branches (a sample that overflows, a
 // root the closed form cannot place).
 
-#include "geometry/parabola.hpp"
-#include "strategies/intervals.hpp"
+#include "control/geometry/parabola.hpp"
+#include "control/strategies/intervals.hpp"
 
 namespace fragsim {
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "geometry/camera_pose.hpp"
-#include "geometry/fragment_state.hpp"
-#include "memory/memory_resource.hpp"
-#include "strategies/parallel_for.hpp"
+#include "control/geometry/camera_pose.hpp"
+#include "control/geometry/fragment_state.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/parallel_for.hpp"
 
 namespace fragsim {
 

@@ -1,4 +1,4 @@
-#include "strategies/two_box_clearance.hpp"
+#include "control/strategies/two_box_clearance.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,12 +8,12 @@
 #include <optional>
 #include <utility>
 
-#include "geometry/vec3_sums.hpp"
-#include "geometry/work_space.hpp"
-#include "strategies/cheap_rejection.hpp"
-#include "strategies/lane_ops.hpp"
-#include "strategies/lanes.hpp"
-#include "strategies/parallel_ranges.hpp"
+#include "control/geometry/vec3_sums.hpp"
+#include "control/geometry/work_space.hpp"
+#include "control/strategies/cheap_rejection.hpp"
+#include "control/strategies/lane_ops.hpp"
+#include "control/strategies/lanes.hpp"
+#include "control/strategies/parallel_ranges.hpp"
 
 namespace fragsim {
 namespace {

@@ -7,10 +7,10 @@
 #include <cstdint>
 #include <span>
 
-#include "geometry/fragment_state.hpp"
-#include "memory/memory_resource.hpp"
-#include "strategies/box_clearance.hpp"
-#include "strategies/parallel_for.hpp"
+#include "control/geometry/fragment_state.hpp"
+#include "control/memory/memory_resource.hpp"
+#include "control/strategies/box_clearance.hpp"
+#include "control/strategies/parallel_for.hpp"
 
 namespace fragsim {
 

@@ -1,8 +1,9 @@
 #pragma once
-#include "strategies/inside.hpp"
+#include "control/strategies/inside.hpp"
 #include "sim/scene.hpp"
 #include "../../sim/scene.hpp"
 #include <sim/scene.hpp>
 #include <fragsim/control.h>
 #include "inside.hpp"
+#include "strategies/inside.hpp"
 #include <vector>
