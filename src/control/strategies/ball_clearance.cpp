@@ -17,19 +17,19 @@ using rejection::dot;
 using rejection::l1;
 
 // The margin on Q = |x|^2 - R^2, relative to S = extent^2 + R_max^2, which bounds every term of Q
-// on the interval. The exact solve judges Q "zero" within 4 eps of the terms' size and rounds
-// its coefficients to a few eps of S: together under 1e-14 S. A margin of 1e-9 S is 1e5 times
-// that, and a few micrometres of distance on a scene's metres.
+// on the interval. The exact solve judges Q "zero" within 4 eps of the terms' size and rounds its
+// coefficients to a few eps of S, together under 1e-14 S. A margin of 1e-9 S is 1e5 times that, and
+// a few micrometres of distance on a scene's metres.
 constexpr double kBallMargin = 1e-9;
 
-// Levels of halving after the whole interval: pieces of 1/2, 1/4 and 1/8 of it.
+// Levels of halving after the whole interval, giving pieces of 1/2, 1/4 and 1/8 of it.
 constexpr int kBallSplits = 3;
 
 // Q's Bernstein coefficients on a piece, the margin, and what they say about the piece.
 struct BallPiece {
   Lanes b[5];
-  Mask clear;   // every coefficient above the margin: Q > 0 on the piece
-  Mask inside;  // Q below -margin at an end of the piece: the path is in the ball there
+  Mask clear;   // every coefficient above the margin, so Q > 0 on the piece
+  Mask inside;  // Q below -margin at an end of the piece, so the path is in the ball there
 };
 
 [[gnu::always_inline]] inline void classify(BallPiece& p, Lanes tol) {
@@ -38,10 +38,9 @@ struct BallPiece {
   p.inside = lanes::lt(p.b[0], -tol) | lanes::lt(p.b[4], -tol);
 }
 
-// The whole interval [0, t_end], for two paths: Q's power coefficients (as
-// ball_contact_quartic), scaled to [0, 1], then Bernstein's. Not usable (never clear) when the
-// margin or the interval is not a finite, non-negative number, or the path does not start
-// clearly outside the ball.
+// The whole interval [0, t_end], for two paths. Q's power coefficients (as ball_contact_quartic)
+// scaled to [0, 1], then Bernstein's. Not usable (never clear) when the margin or the interval is
+// not a finite, non-negative number, or the path does not start clearly outside the ball.
 struct BallStart {
   BallPiece piece;
   Lanes tol;
@@ -72,7 +71,7 @@ struct BallStart {
   return s;
 }
 
-// De Casteljau at the middle: the coefficients of the two halves.
+// De Casteljau at the middle gives the coefficients of the two halves.
 [[gnu::always_inline]] inline void split(const Lanes (&b)[5], Lanes (&left)[5], Lanes (&right)[5]) {
   Lanes m[5] = {b[0], b[1], b[2], b[3], b[4]};
   left[0] = m[0];
@@ -84,7 +83,7 @@ struct BallStart {
   }
 }
 
-// Lane 0's piece (both lanes carry the same path): clear, halving where in doubt.
+// Whether lane 0's piece is clear (both lanes carry the same path), halving where in doubt.
 bool ball_piece_clears(const BallPiece& p, Lanes tol, int splits) {
   if (lanes::get(p.clear, 0)) return true;
   if (lanes::get(p.inside, 0) || splits == 0) return false;
@@ -100,7 +99,7 @@ bool ball_piece_clears(const BallPiece& p, Lanes tol, int splits) {
 }  // namespace
 
 bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, double t_end_s) {
-  // Both lanes carry this path: the same arithmetic, so the same answers, as BallClearance.
+  // Both lanes carry this path, so it gets the same arithmetic, and answers, as BallClearance.
   Lanes d[3];
   Lanes v[3];
   Lanes a[3];
@@ -155,8 +154,8 @@ std::span<const char> BallClearance::run(const Eigen::Vector3d& a_mps2, double g
       for (int c = 0; c < 5; ++c) doubt.b[c] = s.piece.b[c][k];
     }
   }
-  // Pieces in doubt, halved, two at a time: a path is cleared once every one of its pieces is,
-  // as path_clears_ball does.
+  // Pieces in doubt are halved two at a time; a path is cleared once all its pieces are, as in
+  // path_clears_ball.
   for (int level = 1; level <= kBallSplits && !pieces_.empty(); ++level) {
     const bool last = level == kBallSplits;
     next_.clear();

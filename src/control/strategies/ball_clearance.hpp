@@ -1,5 +1,5 @@
 #pragma once
-// edge's cheap rejection (cheap_rejection.hpp): a fragment's path that certainly stays outside the
+// edge's cheap rejection (cheap_rejection.hpp). A fragment's path that certainly stays outside the
 // camera's reachable ball (docs/method.md section 3) needs no root solve. It only ever answers
 // "certainly clear"; a path in doubt goes on to the exact solve.
 
@@ -16,11 +16,11 @@ namespace fragsim {
 // x(t) = d + v t + a t^2 with d = p0, v = v0 and a half its acceleration, for t in [0, t_end];
 // the batched one takes d and v per path and the half acceleration a (`a_mps2`) shared by all.
 
-// True when |x(t)| > r0 + growth t for every t in [0, t_end]: the path certainly stays outside
+// True when |x(t)| > r0 + growth t for every t in [0, t_end], so the path certainly stays outside
 // the ball (fixed when growth = 0, growing otherwise). Q(t) = |x(t)|^2 - (r0 + growth t)^2 is a
-// quartic; its Bernstein coefficients on an interval bound it there (the convex hull property),
-// so all of them above the margin prove Q > 0. The whole interval first, then halves, quarters
-// and eighths of it (de Casteljau's subdivision), only where still in doubt. False when in doubt
+// quartic; its Bernstein coefficients on an interval bound it there (the convex hull property), so
+// all of them above the margin prove Q > 0. The whole interval first, then halves, quarters and
+// eighths of it (de Casteljau's subdivision), only where still in doubt. False when in doubt
 // (non-finite input, t_end < 0, a path that starts inside or is inside at a piece's end).
 bool path_clears_ball(const Parabola& path, double r0_m, double growth_mps, double t_end_s);
 
@@ -30,7 +30,7 @@ class BallClearance {
   explicit BallClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
   // Room for n paths, then each one set by index.
   void resize(std::size_t n);
-  // Room for runs over up to n paths, set later by resize: such a run allocates nothing while at
+  // Room for runs over up to n paths, set later by resize. Such a run allocates nothing while at
   // most two pieces per path stay in doubt.
   void reserve(std::size_t n);
   void set(std::size_t i, const Eigen::Vector3d& d_m, const Eigen::Vector3d& v_mps, double r0_m,
@@ -52,11 +52,11 @@ class BallClearance {
     t_end_[i] = t_end_s;
   }
   std::size_t size() const { return size_; }
-  // One flag per path, in order: 1 when it clears its ball. Valid until the next call.
+  // One flag per path, in order, 1 when it clears its ball. Valid until the next call.
   std::span<const char> run(const Eigen::Vector3d& a_mps2, double growth_mps);
 
  private:
-  // A piece of a path in doubt: the path and Q's five Bernstein coefficients on the piece.
+  // A piece of a path in doubt, the path and Q's five Bernstein coefficients on the piece.
   struct Piece {
     std::int32_t path;
     double b[5];

@@ -26,7 +26,7 @@ using rejection::misses;
 
 bool path_clears_box(const Parabola& path, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
                      double t_end_s) {
-  // Both lanes carry this path: the same arithmetic, so the same answers, as BoxClearance.
+  // Both lanes carry this path, so it gets the same arithmetic, and answers, as BoxClearance.
   Lanes d[3];
   Lanes v[3];
   Lanes lo[3];
@@ -79,8 +79,8 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
   };
   // The first stage, over every fragment, tests x alone (most paths pass the box well to a side),
   // with a margin at least the full test's, |d|_1 <= sum |axis_k| |rel|_1, so that it clears only
-  // what the full test clears. Fragments in doubt are listed without a branch: each writes its
-  // index, the count advances by one where in doubt (a branch would be mispredicted often).
+  // what the full test clears. Fragments in doubt are listed without a branch, which would be
+  // mispredicted often. Each writes its index, and the count advances by one where in doubt.
   const double axes_norm =
       (norm3(frame.axes[0]) + norm3(frame.axes[1]) + norm3(frame.axes[2])) * (1.0 + 1e-12);
   std::size_t doubts = 0;
@@ -99,7 +99,7 @@ std::span<const char> BoxClearance::run(std::span<const FragmentState> fragments
     clears_[i] = static_cast<char>(bits & 1);
     doubt_[doubts] = static_cast<std::int32_t>(i);
     doubts += static_cast<std::size_t>(1 - (bits & 1));
-    clears_[i1] = static_cast<char>((bits >> 1) & 1);  // i1 = i at an odd end: the same answer
+    clears_[i1] = static_cast<char>((bits >> 1) & 1);  // at an odd end i1 = i, so the same answer
     doubt_[doubts] = static_cast<std::int32_t>(i1);
     doubts += static_cast<std::size_t>(i1 > i ? 1 - ((bits >> 1) & 1) : 0);
   }

@@ -1,7 +1,7 @@
 #pragma once
-// The box test of the cheap rejection (cheap_rejection.hpp): a fragment's path that certainly
-// never has all three coordinates inside a box needs no root solve there. It only ever answers
-// "certainly clear"; a path in doubt goes on to the exact solve.
+// The box test of the cheap rejection (cheap_rejection.hpp). A fragment's path that certainly never
+// has all three coordinates inside a box needs no root solve there. It only ever answers "certainly
+// clear"; a path in doubt goes on to the exact solve.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -19,12 +19,12 @@ namespace fragsim {
 // shared by all.
 
 // The axis-aligned box lo <= x(t) <= hi (per coordinate). True when no t in [0, t_end] has all
-// three coordinates inside it: first each coordinate's range over the whole interval (ends and
+// three coordinates inside it. It checks each coordinate's range over the whole interval (ends and
 // vertex), then the x and y ranges over the times z is inside its slab. False when in doubt.
 bool path_clears_box(const Parabola& path, const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
                      double t_end_s);
 
-// A moving frame for BoxClearance: paths given in world coordinates are seen from it, x along
+// A moving frame for BoxClearance. Paths given in world coordinates are seen from it, x along
 // axes[0], y along axes[1], z along axes[2] (a camera's right, up and forward).
 struct BoxFrame {
   Eigen::Vector3d origin_m = Eigen::Vector3d::Zero();
@@ -40,8 +40,8 @@ struct BoxFrame {
 class BoxClearance {
  public:
   explicit BoxClearance(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
-  // One flag per fragment: 1 when, in `frame`, its path x(t) = position + velocity t + a t^2
-  // clears lo - radius <= x(t) <= hi + radius. Valid until the next call.
+  // One flag per fragment, 1 when, in `frame`, its path x(t) = position + velocity t + a t^2 clears
+  // lo - radius <= x(t) <= hi + radius. Valid until the next call.
   std::span<const char> run(std::span<const FragmentState> fragments, const BoxFrame& frame,
                             const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
                             const Eigen::Vector3d& hi_m, double t_end_s);

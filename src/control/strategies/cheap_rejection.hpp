@@ -1,19 +1,20 @@
 #pragma once
-// The cheap rejection: conservative tests that settle, before any root solve, that a fragment's
-// ballistic path cannot meet a region: the camera's reachable ball (`edge`, docs/method.md section
-// 3; ball_clearance.hpp), a box (box_clearance.hpp), and edge-min's protected and grown boxes in
-// one pass (`edge-min`, section 4; two_box_clearance.hpp). They only ever answer "certainly
-// clear"; anything in doubt goes on to the exact solve, so the strategies' results do not change.
-// Each keeps a margin far beyond the root solver's rounding (first_root.hpp judges "touching"
-// within ~1e-15 of the terms' size): a path these call clear, the exact solve also finds clear.
+// The cheap rejection's conservative tests settle, before any root solve, that a fragment's
+// ballistic path cannot meet a region, namely the camera's reachable ball (`edge`, docs/method.md
+// section 3; ball_clearance.hpp), a box (box_clearance.hpp), and edge-min's protected and grown
+// boxes in one pass (`edge-min`, section 4; two_box_clearance.hpp). They only ever answer
+// "certainly clear"; anything in doubt goes on to the exact solve, so the strategies' results do
+// not change. Each keeps a margin far beyond the root solver's rounding (first_root.hpp judges
+// "touching" within ~1e-15 of the terms' size), so a path these call clear, the exact solve finds
+// clear.
 //
-// Each test comes twice: for one path, and batched with the same answers, as passes over many
-// paths two (or four) at a time without a branch on the data inside a pass, so the processor
-// overlaps paths instead of waiting on each one's latency chain.
+// Each test comes twice, for one path, and batched with the same answers, as passes over many paths
+// two (or four) at a time without a branch on the data inside a pass, so the processor overlaps
+// paths instead of waiting on each one's latency chain.
 //
-// Here is what their implementations share: a few lane helpers, and the box test in lanes, which
+// Here is what their implementations share, a few lane helpers and the box test in lanes, which
 // both the box test and the two-box test run. Only ball_clearance.cpp, box_clearance.cpp and
-// two_box_clearance.cpp include it: it brings lane_ops.hpp, whose includers keep -Wpsabi off.
+// two_box_clearance.cpp include it, as it brings lane_ops.hpp, whose includers keep -Wpsabi off.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -43,27 +44,27 @@ inline void broadcast3(const Eigen::Vector3d& x, Lanes (&out)[3]) {
 // ---- The box test -------------------------------------------------------------------------------
 
 // edge-min's two-box rejection runs the box test over every fragment, so it comes in two widths,
-// two lanes and (with AVX2) four: the same templates over lane_ops.hpp's NarrowOps and WideOps,
-// so the same answers, bit for bit, whatever the width.
+// two lanes and (with AVX2) four, as the same templates over lane_ops.hpp's NarrowOps and WideOps,
+// so with the same answers, bit for bit, whatever the width.
 
-// The margin, relative to the path's extent and the box's size: the exact solves find the times a
-// coordinate meets a face to within ~1e-15 of those sizes (in the coordinate); 1e-6 is a
-// million times that, micrometres on a scene's metres.
+// The margin, relative to the path's extent and the box's size. The exact solves find the times a
+// coordinate meets a face to within ~1e-15 of those sizes (in the coordinate), and 1e-6 is a
+// billion times that, micrometres on a scene's metres.
 constexpr double kBoxMargin = 1e-6;
 
 // The acceleration (halved) shared by the paths of a box test, with the reciprocals its vertex
-// times and roots need: a multiplication instead of a division per path. The times come out
+// times and roots need, for a multiplication instead of a division per path. The times come out
 // within an ulp or two of the quotients, far inside the margin. In lanes of either width.
 template <class O>
 struct BoxAccelOf {
   using V = typename O::V;
   V a[3];
-  // -1 / (2 a), or 0 where a = 0 (no vertex): the vertex's time per unit of velocity (the sign
-  // here, as c1 (-1 / (2 a)) is -c1 / (2 a) exactly, and a NaN's sign is never seen).
+  // -1 / (2 a), or 0 where a = 0 (no vertex), is the vertex's time per unit of velocity. The sign
+  // is here since c1 (-1 / (2 a)) is -c1 / (2 a) exactly, and a NaN's sign is never seen.
   V minus_inv_2a[3];
   V inv_a_z;       // 1 / a_z, or 0
   bool curved[3];  // a != 0
-  V reach_m;       // |a|_1 t_end^2 + |lo|_1 + |hi|_1: the part of the margin's scale all share
+  V reach_m;       // |a|_1 t_end^2 + |lo|_1 + |hi|_1, the part of the margin's scale all share
 };
 using BoxAccel = BoxAccelOf<NarrowOps>;
 inline BoxAccel box_accel(const Eigen::Vector3d& a_mps2, const Eigen::Vector3d& lo_m,
@@ -92,12 +93,12 @@ template <class V>
   return c0 + t * (c1 + t * c2);
 }
 
-// Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1]: its range there (the ends,
+// Whether c0 + c1 t + c2 t^2 stays outside [lo, hi] over [t0, t1], i.e. its range there (the ends,
 // and the vertex where it lies inside) misses the slab. `curved` says c2 != 0 (the same for all
-// paths: the acceleration's component), minus_inv_2c2 is -1 / (2 c2). kFromStart: t0 = 0, where the
-// value is c0 itself when c1 and c2 are finite (c0 + 0 (c1 + 0 c2) differs from it at most in a
-// zero's sign, which the comparisons below do not see); only for a caller whose answer is void
-// where they are not.
+// paths, as the acceleration's component), minus_inv_2c2 is -1 / (2 c2). kFromStart means t0 = 0,
+// where the value is c0 itself when c1 and c2 are finite (c0 + 0 (c1 + 0 c2) differs from it at
+// most in a zero's sign, which the comparisons below do not see), and is only for a caller whose
+// answer is void where they are not.
 template <class O, bool kFromStart = false, class V = typename O::V>
 [[gnu::always_inline]] inline typename O::M misses(V c0, V c1, V c2, V minus_inv_2c2, bool curved,
                                                    V t0, V t1, V lo, V hi) {
@@ -123,7 +124,7 @@ template <class O, class V = typename O::V>
   last = O::select(in, O::max(last, t), last);
 }
 
-// The box grown by `grow` and kept `tol` away: lo - grow - tol <= x(t) <= hi + grow + tol. Not
+// The box grown by `grow` and kept `tol` away, lo - grow - tol <= x(t) <= hi + grow + tol. Not
 // usable (never clear) when the margin or the interval is not a finite, non-negative number.
 template <class O>
 struct GrownBox {
@@ -149,9 +150,9 @@ template <class O, class V = typename O::V>
   return box;
 }
 
-// The first stage: some coordinate stays outside its slab over the whole interval. Void where
-// the box is not usable: its scale then holds a non-finite d, v or a (the reach), so where it is
-// usable all three are finite, as misses<O, true> asks.
+// The first stage, whether some coordinate stays outside its slab over the whole interval. Void
+// where the box is not usable, as its scale then holds a non-finite d, v or a (the reach), so where
+// it is usable all three are finite, as misses<O, true> asks.
 template <class O, class V = typename O::V>
 [[gnu::always_inline]] inline typename O::M box_ranges_miss(const V (&d)[3], const V (&v)[3],
                                                             const BoxAccelOf<O>& acc,
@@ -166,7 +167,7 @@ template <class O, class V = typename O::V>
   return miss;
 }
 
-// The second stage: x or y stays outside its slab over the times z is inside its own. Those
+// The second stage, whether x or y stays outside its slab over the times z is inside its own. Those
 // times lie between the first and the last of: the ends of [0, t_end] where z is inside, and the
 // times z crosses a face (stable quadratic roots).
 template <class O, class V = typename O::V>
@@ -194,7 +195,7 @@ template <class O, class V = typename O::V>
     include<O>(O::ge(disc, zero) & O::ne(q, zero), c / q, t_end, first, last);
   }
   const typename O::M window = O::le(first, last);
-  // x and y over that window, widened anyway: roots good to rounding, a multiplied reciprocal.
+  // x and y over that window, widened anyway for its roots' rounding and multiplied reciprocal.
   const V widen = kBoxMargin * t_end;
   const V w0 = O::max(first - widen, zero);
   const V w1 = O::min(last + widen, t_end);
@@ -206,10 +207,10 @@ template <class O, class V = typename O::V>
   return miss;
 }
 
-// Both stages: the box test for a lane's worth of paths at once, each over its own [0, t_end];
-// reach_m is |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval).
-// Lanes in `settled` (a bit each) are answered too, but the caller ignores them: the window's
-// roots only where the ranges left a path in doubt that matters, the same answers, cheaper.
+// Both stages, the box test for a lane's worth of paths at once, each over its own [0, t_end];
+// reach_m is |a|_1 t_end^2 + |lo|_1 + |hi|_1 (BoxAccel::reach_m when all share one interval). Lanes
+// in `settled` (a bit each) are answered too but ignored, so the window's roots come only where the
+// ranges left a path in doubt that matters, the same answers, cheaper.
 template <class O, class V = typename O::V>
 [[gnu::always_inline]] inline typename O::M box_clear(const V (&d)[3], const V (&v)[3],
                                                       const BoxAccelOf<O>& acc, const V (&lo_m)[3],

@@ -37,7 +37,7 @@ Quartic ball_contact_quartic(const BallisticPath& path, const Eigen::Vector3d& c
 
 namespace {
 
-// The reachable ball for a path that lands after t_horizon: radius r0 + growth tau.
+// The reachable ball for a path that lands after t_horizon has radius r0 + growth tau.
 struct BallSize {
   double r0_m;
   double growth_mps;
@@ -53,7 +53,7 @@ BallSize ball_size(const ReachModel& model, double t_horizon_s) {
 
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                                   const ReachModel& model, double t_horizon_s) {
-  // Cheap rejection before any root solve (ball_clearance.hpp): most paths that stay clear of
+  // Cheap rejection before any root solve (ball_clearance.hpp), as most paths that stay clear of
   // the ball are settled by Q's Bernstein coefficients, with a margin the solve agrees with.
   const BallSize ball = ball_size(model, t_horizon_s);
   if (path_clears_ball(path.relative_to(camera_m), ball.r0_m, ball.growth_mps, t_horizon_s)) {
@@ -66,18 +66,17 @@ ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector
 
 namespace {
 
-// solve_contact up to its root search: false when the margin-free rejection settles the path
-// clear, else true with the quartic whose first non-positive point in [0, t_horizon] is the entry.
+// solve_contact up to its root search. False when the margin-free rejection settles the path clear,
+// else true with the quartic whose first non-positive point in [0, t_horizon] is the entry.
 bool contact_quartic(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                      const ReachModel& model, double t_horizon_s, Quartic& out) {
   const BallSize ball = ball_size(model, t_horizon_s);
   const double r0 = ball.r0_m;
   const double growth = ball.growth_mps;
-  // The first rejection this function had, kept because it decides without a margin: the
-  // fragment closes on the centre at most at |V| + |g| tau while the ball grows at `growth`, so
-  // if even the closest it could get by the horizon stays outside the ball then, no time in
-  // between is inside (a path grazing the ball within rounding is "clear" here, where the solve
-  // could call it a touch).
+  // This rejection decides without a margin. The fragment closes on the centre at most at
+  // |V| + |g| tau while the ball grows at `growth`, so if even the closest it could get by the
+  // horizon stays outside the ball then, no time in between is inside (a path grazing the ball
+  // within rounding is "clear" here, where the solve could call it a touch).
   const double horizon_s = std::max(t_horizon_s, 0.0);
   const double closest_m = norm3(path.p0_m - camera_m) - norm3(path.v0_mps) * horizon_s -
                            0.5 * norm3(path.accel_mps2) * horizon_s * horizon_s;
@@ -114,8 +113,8 @@ ContactPrediction ContactQuery::predict(const FragmentState& f) const {
 
 namespace {
 
-// time_to_horizon then the cap, for two paths at once (the same formula, so the same results):
-// y(tau) - y_ref = a tau^2 + b tau + c, with a the same for both.
+// time_to_horizon then the cap, for two paths at once (the same formula, so the same results),
+// where y(tau) - y_ref = a tau^2 + b tau + c, with a the same for both.
 lanes::Lanes capped_time_to_horizon(double a, lanes::Lanes b, lanes::Lanes c, double remaining_s) {
   const lanes::Lanes fallback = lanes::broadcast(remaining_s);
   return lanes::min(time_to_plane_s<lanes::LaneOps>(a, b, c, fallback), fallback);
@@ -168,8 +167,8 @@ std::span<const ContactPrediction> ContactPredictor::predict(
     out_[k].t_horizon_s = query.t_horizon_s(p);
     defer_solve(k, p, query.model(fragment(k)));
   }
-  // The screened ones, one pass at a time over arrays: their paths, t_G two at a time and the
-  // balls, then the rejection over all of them.
+  // The screened ones go one pass at a time over arrays (their paths, t_G two at a time and the
+  // balls), then the rejection runs over all of them.
   const std::size_t n = screened_.size();
   const std::size_t padded = n + n % lanes::kWidth;
   for (auto* x : {&vy_, &py_, &radius_, &t_horizon_}) x->resize(padded);
@@ -193,7 +192,7 @@ std::span<const ContactPrediction> ContactPredictor::predict(
                                                    lanes::load(&py_[j]) - y_ref, query.remaining_s);
     lanes::store(&t_horizon_[j], th);
   }
-  // As time_to_horizon: without a ground to fall to (y_ref = -inf), t_G is the fallback.
+  // As in time_to_horizon, without a ground to fall to (y_ref = -inf) t_G is the fallback.
   if (!std::isfinite(query.y_ref_m))
     std::fill(t_horizon_.begin(), t_horizon_.end(), query.remaining_s);
   const bool thesis = query.reach == Reach::kThesis;
@@ -258,12 +257,12 @@ namespace {
 // closed form are good to ~1e-15 of them (first_root.hpp); anything within a million times that
 // of a decision is decided by near_plane_crossing itself.
 constexpr double kGuard = 1e-9;
-// A double root (a depth that only grazes the near plane) is left to the solver below this ratio
-// of the discriminant's root to its terms: the closed form loses digits there.
+// A double root (a depth that only grazes the near plane) is left to the solver below this ratio of
+// the discriminant's root to its terms, as the closed form loses digits there.
 constexpr double kDoubleRoot = 1e-4;
 
-// The first tau in [0, horizon] where c0 + c1 tau + c2 tau^2 <= 0, given c0 > 0: the crossing,
-// kNone, or kDoubt when the answer is within the guards of changing.
+// The first tau in [0, horizon] where c0 + c1 tau + c2 tau^2 <= 0, given c0 > 0. It is the
+// crossing, kNone, or kDoubt when the answer is within the guards of changing.
 enum class Crossing { kAt, kNone, kDoubt };
 struct DepthRoot {
   Crossing kind;
@@ -277,13 +276,13 @@ DepthRoot depth_root(double c0, double c1, double c2, double horizon_s) {
   if (!std::isfinite(size) || !(horizon_s >= 0.0) || !(c0 > 1e3 * kGuard * size)) {
     return {Crossing::kDoubt};
   }
-  // No crossing when the depth's minimum over [0, horizon] stays clear of the plane: at the ends,
-  // or at a convex depth's vertex inside.
+  // No crossing when the depth's minimum over [0, horizon], at the ends or at a convex depth's
+  // vertex inside, stays clear of the plane.
   double lowest = std::min(c0, c0 + horizon_s * (c1 + horizon_s * c2));
   if (c2 > 0.0 && -c1 > 0.0 && -c1 < 2.0 * c2 * horizon_s) lowest = c0 - c1 * c1 / (4.0 * c2);
   if (lowest > 1e3 * kGuard * size) return {Crossing::kNone};
-  // The root: linear, or the stable quadratic formula; with c0 > 0 the first entry is the smaller
-  // root of a convex depth (both roots then have one sign) and the larger of a concave one.
+  // The root is linear, or from the stable quadratic formula. With c0 > 0 the first entry is the
+  // smaller root of a convex depth (both roots then have one sign) and the larger of a concave one.
   double tau = 0.0;
   double slope = 0.0;  // |depth'(tau)|
   if (c2 == 0.0) {
@@ -298,7 +297,7 @@ DepthRoot depth_root(double c0, double c1, double c2, double horizon_s) {
     }
     const double q = -0.5 * (c1 + std::copysign(root, c1));
     const double r1 = q / c2;
-    const double r2 = c0 / q;  // q != 0: |q| >= root / 2 > 0
+    const double r2 = c0 / q;  // q != 0, as |q| >= root / 2 > 0
     tau = c2 > 0.0 ? std::min(r1, r2) : std::max(r1, r2);
     slope = root;
   }

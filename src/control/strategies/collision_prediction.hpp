@@ -1,5 +1,5 @@
 #pragma once
-// The thesis's collision prediction (section 3.2 of the thesis, docs/method.md section 3): the
+// The thesis's collision prediction (section 3.2 of the thesis, docs/method.md section 3) tests the
 // fragment's ballistic path against the ball the camera can reach before the fragment lands.
 
 #include <Eigen/Core>
@@ -17,16 +17,16 @@
 
 namespace fragsim {
 
-// P(tau) = p0 + v0 tau + g tau^2 / 2, tau measured from now: the geometry's parabola, whose
+// P(tau) = p0 + v0 tau + g tau^2 / 2, tau measured from now, is the geometry's parabola, whose
 // acceleration is gravity here.
 using BallisticPath = Parabola;
 
-// The path the predictor believes in. `discrete` uses V + g dt/2: ODE's semi-implicit Euler puts
+// The path the predictor believes in. `discrete` uses V + g dt/2, as ODE's semi-implicit Euler puts
 // positions at step times exactly on that parabola.
 BallisticPath predicted_path(const FragmentState& f, const Eigen::Vector3d& g_mps2, Predictor p,
                              double dt_s);
 
-// t_G - now: the later time at which the path comes down through height y_ref_m, or `fallback_s`
+// t_G - now, the later time at which the path comes down through height y_ref_m, or `fallback_s`
 // when it never does.
 double time_to_horizon(const BallisticPath& path, double y_ref_m, double fallback_s);
 
@@ -43,19 +43,19 @@ struct ContactPrediction {
 struct ReachModel {
   Reach reach = Reach::kThesis;
   double max_speed_mps = 0.0;  // V_c
-  double radius_m = 0.0;       // camera body plus fragment: the ball never shrinks below this
+  double radius_m = 0.0;       // camera body plus fragment, the ball's least radius
 };
 
-// Whether the path is inside, or enters, the camera's reachable ball within [0, t_horizon]:
-// the cheap rejection (path_clears_ball), then solve_contact.
+// Whether the path is inside, or enters, the camera's reachable ball within [0, t_horizon], by the
+// cheap rejection (path_clears_ball), then solve_contact.
 ContactPrediction predict_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                                   const ReachModel& model, double t_horizon_s);
 
-// predict_contact without the cheap rejection in front: for paths it left in doubt.
+// predict_contact without the cheap rejection in front, for paths it left in doubt.
 ContactPrediction solve_contact(const BallisticPath& path, const Eigen::Vector3d& camera_m,
                                 const ReachModel& model, double t_horizon_s);
 
-// What `edge` asks of each fragment it examines: the path its predictor believes in, t_G (never
+// What `edge` asks of each fragment it examines, the path its predictor believes in, t_G (never
 // past the look-ahead's cap) and the contact with the ball the camera can reach.
 struct ContactQuery {
   Eigen::Vector3d camera_m = Eigen::Vector3d::Zero();
@@ -63,7 +63,7 @@ struct ContactQuery {
   Predictor predictor = Predictor::kThesis;
   double dt_s = 0.0;
   double y_ref_m = 0.0;      // the height whose downward crossing is t_G
-  double remaining_s = 0.0;  // look-ahead left: t_G's fallback and cap
+  double remaining_s = 0.0;  // look-ahead left, t_G's fallback and cap
   Reach reach = Reach::kThesis;
   double max_speed_mps = 0.0;  // V_c
   double body_radius_m = 0.0;  // the camera body's; each fragment adds its own
@@ -79,17 +79,17 @@ struct ContactQuery {
   ContactPrediction predict(const FragmentState& f) const;
 };
 
-// ContactQuery::predict for many fragments, with the same answers: the cheap rejection runs first
+// ContactQuery::predict for many fragments, with the same answers. The cheap rejection runs first
 // over them as batched passes (BallClearance), the solve only on those left in doubt.
 class ContactPredictor {
  public:
   explicit ContactPredictor(MemoryResource* mem = default_memory_resource()) : mem_(mem) {}
-  // One prediction per index in `which`, in order; valid until the next call. `screen`, when not
-  // empty, says per index whether the cheap rejection is worth trying first: not for a fragment
-  // that was a candidate a step ago and almost surely still is (the answer is the same either way).
-  // `guess_s`, when not empty, is per index a guess of the contact time (NaN: none), searched
-  // first within guess_half_width_s of it (first_nonpositive_near: the same contact to the
-  // search's accuracy, found without the derivative's roots when the guess brackets it).
+  // One prediction per index in `which`, in order, valid until the next call. `screen`, when not
+  // empty, says per index whether the cheap rejection is worth trying first. It is not for a
+  // fragment that was a candidate a step ago and almost surely still is (the answer is the same
+  // either way). `guess_s`, when not empty, is per index a guess of the contact time (NaN if none),
+  // searched first within guess_half_width_s of it. first_nonpositive_near finds the same contact
+  // to the search's accuracy, without the derivative's roots when the guess brackets it.
   std::span<const ContactPrediction> predict(const ContactQuery& query,
                                              std::span<const FragmentState> fragments,
                                              std::span<const int> which,
@@ -103,7 +103,7 @@ class ContactPredictor {
   MemoryResource* mem_;
   BallClearance clearance_{mem_};
   ResourceVector<int> screened_{mem_};  // positions in `which` that go through the rejection
-  // Of the screened fragments: the path's velocity and height, the radius, t_G.
+  // The screened fragments' path velocity and height, radius and t_G.
   ResourceVector<double> vy_{mem_}, py_{mem_}, radius_{mem_}, t_horizon_{mem_};
   // The quartics left to solve, their horizons and the positions in `which` they answer for.
   ResourceVector<Quartic> quartics_{mem_};
@@ -127,11 +127,11 @@ Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Ve
 Eigen::Vector3d nearest_edge_direction(const CameraPose& camera, const Eigen::Vector2d& point,
                                        double half_width_m, double half_height_m);
 
-// `edge`'s push direction: nearest_edge_direction at the point near_plane_crossing gives, or at
-// `now_m` (the fragment's position) when there is no crossing. The same answer, found mostly
-// without a root search: the depth is a quadratic, crossed where its closed-form root says; only
-// a case near a decision (a root close to 0, the horizon or a double root, a point close to an
-// axis or to the rectangle's diagonals) is handed to near_plane_crossing.
+// `edge`'s push direction, nearest_edge_direction at the point near_plane_crossing gives, or at
+// `now_m` (the fragment's position) when there is no crossing. It finds the same answer mostly
+// without a root search, as the depth is a quadratic, crossed where its closed-form root says. Only
+// a case near a decision (a root close to 0, the horizon or a double root, a point close to an axis
+// or to the rectangle's diagonals) is handed to near_plane_crossing.
 Eigen::Vector3d crossing_edge_direction(const BallisticPath& path, const CameraPose& camera,
                                         const Eigen::Vector3d& camera_velocity_mps,
                                         double horizon_s, const Eigen::Vector3d& now_m,

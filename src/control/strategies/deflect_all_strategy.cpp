@@ -10,13 +10,13 @@
 namespace fragsim {
 namespace {
 
-// The fewest fragments a worker takes at once: each is a few dozen operations, so a much shorter
+// The fewest fragments a worker takes at once. Each is a few dozen operations, so a much shorter
 // range would cost more to hand to a worker than to run.
 constexpr std::int32_t kMinRange = 1024;
 
 }  // namespace
 
-// Kept at its largest size (its pages written once): reserve() runs before every step of the
+// Kept at its largest size, its pages written once, as reserve() runs before every step of the
 // controller library, where a fresh reserve_touched of the whole array would cost a pass over it.
 void DeflectAllStrategy::reserve(int fragment_count) {
   const auto n = static_cast<std::size_t>(std::max(fragment_count, 0));
@@ -30,10 +30,10 @@ DeflectAllStrategy::Push DeflectAllStrategy::push_of(const StepContext& ctx, std
   if (squared_norm3(rel) > params_.range_m * params_.range_m) return {};
   const Eigen::Vector3d rel_v = f.velocity_mps - ctx.camera_velocity_mps;
   if (dot3(rel, rel_v) >= 0.0) return {};  // not approaching
-  // Away from the view axis: the fragment's offset across the view direction.
+  // Away from the view axis is along the fragment's offset across the view direction.
   Eigen::Vector3d away = rel - dot3(rel, cam.forward) * cam.forward;
   const double n = norm3(away);
-  // A fragment on the axis itself has no "away": push it up, as debris usually clears upward.
+  // A fragment on the axis itself has no "away", so it goes up, as debris usually clears upward.
   away = n > 1e-9 ? Eigen::Vector3d(away / n) : cam.up;
   return {true, f.mass_kg * params_.accel_mps2 * away};
 }

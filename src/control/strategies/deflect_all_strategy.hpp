@@ -1,6 +1,6 @@
 #pragma once
-// `deflect-all`: every fragment approaching the camera within range is pushed away from the view
-// axis, with no prediction and no choice of edge (thesis fig. 2.2).
+// `deflect-all` pushes every fragment approaching the camera within range away from the view axis,
+// with no prediction and no choice of edge (thesis fig. 2.2).
 
 #include <Eigen/Core>
 #include <vector>
@@ -20,8 +20,8 @@ class DeflectAllStrategy final : public Strategy {
   std::string name() const override { return "deflect-all"; }
   void reset(int fragment_count) override { reserve(fragment_count); }
   void reserve(int fragment_count) override;
-  // Each fragment's push is its own: on ctx.parallel's workers, one slot per fragment, gathered
-  // in fragment order afterwards (the same forces and capped as on one thread).
+  // Each fragment's push is its own, so they run on ctx.parallel's workers, one slot per fragment,
+  // gathered in fragment order afterwards (the same forces and capped as on one thread).
   void step(const StepContext& ctx, StepOutput& out) override;
 
  private:

@@ -24,17 +24,17 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The fewest exact solves a worker takes at once: a solve costs about a microsecond
+// The fewest exact solves a worker takes at once. A solve costs about a microsecond
 // (docs/benchmarks.md), so sixteen are well worth handing to a worker.
 constexpr std::int32_t kMinSolveRange = 16;
 
-// c0 + c1 t + c2 t^2: one camera-space coordinate of the relative path.
+// One camera-space coordinate of the relative path, c0 + c1 t + c2 t^2.
 using Coord = AxisQuadratic;
 
-// The least acceleration along +axis (sign = +1) or -axis (sign = -1) that keeps coordinate
-// `c` beyond `half` (outside [-half, half] on that side) at every time in `when`: the largest,
-// over those times, of the gap still to cover divided by the displacement a unit acceleration
-// gives by then. Sampled at nine points per interval; re-solving every step corrects the rest.
+// The least acceleration along +axis (sign = +1) or -axis (sign = -1) that keeps coordinate `c`
+// beyond `half` (outside [-half, half] on that side) at every time in `when`, the largest over
+// those times of the gap still to cover divided by the displacement a unit acceleration gives by
+// then, sampled at nine points per interval; re-solving every step corrects the rest.
 double least_accel(const Coord& c, double half, int sign, const Intervals& when, double dt) {
   double need = 0.0;
   for (int i = 0; i < when.n; ++i) {
@@ -42,33 +42,33 @@ double least_accel(const Coord& c, double half, int sign, const Intervals& when,
     const double b = when.span[i][1];
     for (int k = 0; k <= 8; ++k) {
       const double t = a + (b - a) * k / 8.0;
-      const double gap = half - sign * c.at(t);  // > 0: still inside on that side
+      const double gap = half - sign * c.at(t);  // > 0 while still inside on that side
       if (gap <= 0.0) continue;
       const double per_accel = EdgeMinStrategy::displacement_per_accel(t, dt);
-      if (per_accel <= 0.0) return kInf;  // inside the box's shadow right now: no push helps
+      if (per_accel <= 0.0) return kInf;  // inside the box's shadow right now, where no push helps
       need = std::max(need, gap / per_accel);
     }
   }
   return need;
 }
 
-// The protected box around the eye, already grown by the fragment's radius: lo <= x <= hi.
+// The protected box around the eye, lo <= x <= hi, already grown by the fragment's radius.
 struct Slabs {
   std::array<double, 3> lo{};
   std::array<double, 3> hi{};
 };
 
-// rho(t) on one side of the protected box: how far that side can be, t after now, beyond where a
+// rho(t) on one side of the protected box is how far that side can be, t after now, beyond where a
 // constraint's centre puts it. The translation part is the constraint's own (0.5 A t^2 about the
-// constant-velocity path, V_c t about the eye now); the turn part is the least of two bounds on
-// how far a turn of the view moves that side:
-// - the chord: a point rot_m from the eye moves by at most rot_m min(angle, 2) when the view
-//   turns by `angle` (at most turn t);
-// - the ball: every orientation of the box lies within rot_m of the eye (its farthest corner),
+// constant-velocity path, V_c t about the eye now); the turn part is the least of two bounds on how
+// far a turn of the view moves that side:
+// - By the chord, a point rot_m from the eye moves by at most rot_m min(angle, 2) when the view
+//   turns by `angle` (at most turn t).
+// - By the ball, every orientation of the box lies within rot_m of the eye (its farthest corner),
 //   so no side reaches past rot_m, which is rot_m - half beyond a side `half` from the eye,
 //   whatever the turn rate (docs/camera_models.md, section 2).
 // Both are capped growths, so the turn part is rot_m min(turn t, cap / rot_m) with the side's
-// cap = min(2 rot_m, rot_m - half) = rot_m - half: linear up to the side's knee, flat after it.
+// cap = min(2 rot_m, rot_m - half) = rot_m - half, linear up to the side's knee, flat after it.
 struct Inflation {
   double q1_mps = 0.0;
   double q2_mps2 = 0.0;
@@ -94,8 +94,8 @@ struct Inflation {
     return {0.0, q1_mps + rot_m * turn_radps, q2_mps2};
   }
   double at(double t, double cap_m) const { return piece(cap_m, t >= knee_s(cap_m)).at(t); }
-  // Each side's knee, as turn_cap_m (set by with_knees()): the exact solve asks for them on every
-  // axis of every candidate, and each is a division.
+  // Each side's knee as in turn_cap_m (set by with_knees()), stored as the exact solve asks for
+  // them on every axis of every candidate, and each is a division.
   std::array<double, 6> side_knee_s{};
   double knee_s(int k, int sign) const { return side_knee_s[turn_side(k, sign)]; }
   Inflation with_knees() const {
@@ -107,8 +107,8 @@ struct Inflation {
   }
 };
 
-// The turn caps of a box lo <= x <= hi about the eye (lo <= 0 <= hi) whose farthest corner is
-// rot_m away: per side, the chord's cap 2 rot_m or the ball's rot_m - |side|, the smaller.
+// The turn caps of a box lo <= x <= hi about the eye (lo <= 0 <= hi) whose farthest corner is rot_m
+// away, per side the chord's cap 2 rot_m or the ball's rot_m - |side|, the smaller.
 std::array<double, 6> turn_caps_m(const Eigen::Vector3d& lo_m, const Eigen::Vector3d& hi_m,
                                   double rot_m) {
   std::array<double, 6> cap{};
@@ -121,8 +121,8 @@ std::array<double, 6> turn_caps_m(const Eigen::Vector3d& lo_m, const Eigen::Vect
   return cap;
 }
 
-// One region the camera is certain to stay in: the fragment's camera-axis coordinates relative to
-// the region's centre, and how far the protected box can stray from there.
+// One region the camera is certain to stay in, as the fragment's camera-axis coordinates relative
+// to the region's centre and how far the protected box can stray from there.
 struct Constraint {
   std::array<Coord, 3> axis;
   const Inflation* rho;  // with its knees (Inflation::with_knees)
@@ -142,15 +142,15 @@ inline Slab grown_slab(const Constraint& con, int k, const Slabs& slabs, double 
 }
 
 // Both knees of axis k's sides at or before the start, or both at or past the end (an instant or
-// unbounded turn, a short window): the grown slab over [0, t_end] is one piece, the common case.
+// unbounded turn, a short window), so the grown slab over [0, t_end] is one piece, the common case.
 inline bool one_piece(const Constraint& con, int k, double t_end) {
   const double knee_lo_s = con.rho->knee_s(k, -1);
   const double knee_hi_s = con.rho->knee_s(k, +1);
   return (knee_lo_s <= 0.0 && knee_hi_s <= 0.0) || (knee_lo_s >= t_end && knee_hi_s >= t_end);
 }
 
-// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab: piece
-// by piece, between the knees, where both bounds are single quadratics.
+// The times in [0, t_end] at which coordinate `k` is inside constraint `con`'s grown slab, found
+// piece by piece between the knees, where both bounds are single quadratics.
 Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double t_end) {
   const auto piece = [&](double t0, double t1) {
     const Slab s = grown_slab(con, k, slabs, t0, t1);
@@ -168,12 +168,12 @@ Intervals within_grown(const Constraint& con, int k, const Slabs& slabs, double 
     out = any ? unite_in_order(out, piece(cut[p], cut[p + 1])) : piece(cut[p], cut[p + 1]);
     any = true;
   }
-  return any ? out : piece(0.0, t_end);  // t_end = 0: the one instant
+  return any ? out : piece(0.0, t_end);  // the one instant when t_end = 0
 }
 
-// Where the worst case's path lies inside the grown boxes: per axis the times inside every
-// constraint's grown slab, and the two pairs of axes the ways out are sampled over. Kept apart
-// from the pushes (WayNeeds below) because most candidates need only this and one way's push.
+// Where the worst case's path lies inside the grown boxes, as per axis the times inside every
+// constraint's grown slab, and the two pairs of axes the ways out are sampled over. Kept apart from
+// the pushes (way_needs below) because most candidates need only this and one way's push.
 struct GrownSets {
   std::array<Intervals, 3> in;
   Intervals in_xz;  // a push along y must clear the box while x and z are inside
@@ -183,7 +183,7 @@ struct GrownSets {
 
 // The times in [0, t_end] at which axis k is inside every constraint's grown slab.
 Intervals axis_set(std::span<const Constraint> cons, int k, const Slabs& slabs, double t_end) {
-  // Two one-piece slabs (the robust models' two regions, any turn rate): found together.
+  // Two one-piece slabs (the robust models' two regions, any turn rate) are found together.
   if (cons.size() == 2 && one_piece(cons[0], k, t_end) && one_piece(cons[1], k, t_end)) {
     Intervals both[2];
     slab_times(grown_slab(cons[0], k, slabs, 0.0, t_end), grown_slab(cons[1], k, slabs, 0.0, t_end),
@@ -217,13 +217,13 @@ GrownSets grown_sets(std::span<const Constraint> cons, const Slabs& slabs, doubl
   return s;
 }
 
-// least_accel against the intersection of the constraints' grown boxes: outside any one of them
-// at time t is a miss, so the gap to cover is the least over them. Stops as soon as the need
-// passes stop_above (the caller then only learns that it did).
+// least_accel against the intersection of the constraints' grown boxes. Outside any one of them at
+// time t is a miss, so the gap to cover is the least over them. Stops as soon as the need passes
+// stop_above (the caller then only learns that it did).
 double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m, int sign,
                          const Intervals& when, double dt, double delay_s,
                          double stop_above = kInf) {
-  // Each constraint's side: its turn cap and the knee where its growth flattens, once.
+  // Each constraint's side's turn cap and the knee where its growth flattens, found once.
   std::array<double, 2> cap_m{};
   std::array<double, 2> knee_s{};
   const std::size_t n_cons = std::min(cons.size(), cap_m.size());
@@ -253,8 +253,8 @@ double least_accel_grown(std::span<const Constraint> cons, int k, double edge_m,
   return need;
 }
 
-// The least push along way w (+up, -up, +right, -right: the order of `dir` in step()) that takes
-// the worst case out of the grown boxes, for a push that starts delay_s from now.
+// The least push along way w (+up, -up, +right, -right, the order of Step::dir) that takes the
+// worst case out of the grown boxes, for a push that starts delay_s from now.
 double way_need(std::span<const Constraint> cons, const GrownSets& sets, const Slabs& slabs,
                 std::size_t way, double dt, double delay_s, double stop_above = kInf) {
   const int k = way < 2 ? 1 : 0;
@@ -273,13 +273,13 @@ std::array<double, 4> way_needs(std::span<const Constraint> cons, const GrownSet
   return need;
 }
 
-// The latest time-to-threat at which a robust model may still have to act: beyond it, a push of
-// a_max started one step later covers the half-width plus the fragment's radius plus rho(t),
-// the most the nearer side of the grown box can be away from a fragment inside it. The root of
+// The latest time-to-threat at which a robust model may still have to act. Beyond it, a push of
+// a_max started one step later covers the half-width plus the fragment's radius plus rho(t), the
+// most the nearer side of the grown box can be away from a fragment inside it. The root of
 // a_max D(t - dt) = h + r + rho(t) with rho's two upper bounds on the narrower axis's sides (its
-// linear chord part and its cap, `turn_cap_m`), the smaller of the two, plus a step (a threat
-// first inside this window was safe to wait on a step ago); the whole horizon when a_max does not
-// outgrow 2 q2 (no guarantee then).
+// linear chord part and its cap, `turn_cap_m`), the smaller of the two, plus a step (a threat first
+// inside this window was safe to wait on a step ago); the whole horizon when a_max does not outgrow
+// 2 q2 (no guarantee then).
 double look_ahead_s(const Inflation& rho, double half_m, double turn_cap_m, double a_max_mps2,
                     double dt, double horizon_s) {
   const double a = 0.5 * a_max_mps2 - rho.q2_mps2;
@@ -293,8 +293,8 @@ double look_ahead_s(const Inflation& rho, double half_m, double turn_cap_m, doub
   return std::isfinite(t) ? std::min(t + dt, horizon_s) : horizon_s;
 }
 
-// The constant model's answer for one fragment: whether its path enters the box, and the least
-// push (need) along each way out.
+// The constant model's answer for one fragment, whether its path enters the box and the least push
+// (need) along each way out.
 struct Nominal {
   bool threat = false;
   std::array<double, 4> need{};
@@ -342,9 +342,9 @@ std::size_t chosen(const std::array<double, 4>& need, const std::array<double, 4
   return best;
 }
 
-// One fragment's path as the exact solve sees it: in the camera's axes, relative to the camera
-// (d and w; x, y and z, each coordinate with half the gravity), the protected box grown by its
-// radius, its own look-ahead, and the constant model's answer: its way out and least push.
+// One fragment's path as the exact solve sees it, in the camera's axes, relative to the camera (d
+// and w; x, y and z, each coordinate with half the gravity), the protected box grown by its radius,
+// its own look-ahead, and the constant model's way out and least push.
 struct PathInBox {
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
@@ -368,8 +368,8 @@ double EdgeMinStrategy::time_to_ground_s(double y0_m, double vy_mps, double half
   const double b = vy_mps;
   const double c = y0_m - ground_m;
   if (const std::optional<double> t = time_to_plane_s(AxisQuadratic{c, b, a})) return *t;
-  // No downward crossing ahead. Above the ground: it never comes down. At or below it (resting,
-  // or sunk into it by the contact's softness): the path rises for good (gravity off or up) or
+  // No downward crossing is ahead. A path above the ground never comes down. One at or below it
+  // (resting, or sunk into it by the contact's softness) rises for good (gravity off or up) or
   // stays underground, where nothing it predicts is real.
   if (c > 0.0) return kInf;
   return (a > 0.0 || (a == 0.0 && b > 0.0)) ? kInf : 0.0;
@@ -401,14 +401,14 @@ void EdgeMinStrategy::set_worker_count(int workers) {
   clearance_.set_workers(workers);
 }
 
-// Kept at its largest size (its pages written once): reserve() runs before every step of the
+// Kept at its largest size, its pages written once, as reserve() runs before every step of the
 // controller library, where a fresh reserve_touched of the whole array would cost a pass over it.
 void EdgeMinStrategy::reserve_answers(std::size_t n) {
   if (answers_.size() < n) answers_.resize(n);
 }
 
 void EdgeMinStrategy::carry_over(std::span<const int> previous) {
-  // The last forces are read only by the budget: without one there is nothing to carry.
+  // The last forces are read only by the budget, so without one there is nothing to carry.
   if (params_.max_solves <= 0) {
     carried_over_ = false;
     return;
@@ -432,7 +432,7 @@ void EdgeMinStrategy::undo_carry_over() {
 
 double EdgeMinStrategy::assumed_accel_mps2(const StepContext& ctx) const {
   const double declared = ctx.camera_max_accel_mps2;
-  return declared >= 0.0 ? declared : params_.camera_accel_mps2;  // NaN: not declared either
+  return declared >= 0.0 ? declared : params_.camera_accel_mps2;  // NaN if not declared either
 }
 
 double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
@@ -440,8 +440,8 @@ double EdgeMinStrategy::assumed_turn_radps(const StepContext& ctx) const {
   return (declared >= 0.0 ? declared : params_.camera_turn_degps) * kPi / 180.0;
 }
 
-// One step's constants: the protected box about the eye, the look-ahead's bounds, the robust
-// models' regions, and after the rejection its answers; with the stages that read only these (the
+// One step's constants (the protected box about the eye, the look-ahead's bounds, the robust
+// models' regions, and after the rejection its answers), with the stages that read only these (the
 // exact solve of one fragment).
 struct EdgeMinStrategy::Step {
   Step(const StepContext& context, const EdgeMinParams& edge_min, double assumed_accel_mps2,
@@ -454,15 +454,15 @@ struct EdgeMinStrategy::Step {
   const EdgeMinParams& params;
   const std::array<double, 4>& way_weights;
   bool weighted;
-  // The protected box, before the fragment's radius: lo_m <= x <= hi_m in the camera's axes.
+  // The protected box, before the fragment's radius, lo_m <= x <= hi_m in the camera's axes.
   double half_w_m = 0.0;
   double half_h_m = 0.0;
   double front_m = 0.0;
   double back_m = 0.0;
   Eigen::Vector3d lo_m = Eigen::Vector3d::Zero();
   Eigen::Vector3d hi_m = Eigen::Vector3d::Zero();
-  // The look-ahead: each fragment's own, until it reaches the ground, within the cap and the
-  // shot's end when known. The robust models' window is cut to it; the rejection bounds it.
+  // Each fragment's own look-ahead lasts until it reaches the ground, within the cap and the shot's
+  // end when known. The robust models' window is cut to it; the rejection bounds it.
   double cap_s = 0.0;
   double horizon_s = 0.0;
   Eigen::Vector3d half_g = Eigen::Vector3d::Zero();  // half the gravity, in the camera's axes
@@ -476,7 +476,7 @@ struct EdgeMinStrategy::Step {
   // same one).
   double half_min_m = 0.0;
   double narrow_cap_m = 0.0;
-  // The ways out: +up, -up, +right, -right.
+  // The ways out, +up, -up, +right, -right.
   std::array<Eigen::Vector3d, 4> dir;
   // The rejection's answers, and the grown box's look-ahead (robust models only).
   std::span<const char> clears;
@@ -484,7 +484,7 @@ struct EdgeMinStrategy::Step {
   std::span<const std::int32_t> unsettled;
   double look_s = 0.0;
 
-  // The grown box is rejected against in the tighter-growing frame: the constant-velocity one for
+  // The grown box is rejected against in the tighter-growing frame, the constant-velocity one for
   // bounded_accel (the intersection with the ball only shrinks it), the eye's for reachable.
   const Inflation& reject_rho() const { return use_accel ? accel_rho : ball_rho; }
   // The robust models' window for fragments of radius up to r_max_m (look_ahead_s).
@@ -493,23 +493,23 @@ struct EdgeMinStrategy::Step {
   TwoBoxClearance::Boxes rejection_boxes() const;
   void set_window(TwoBoxClearance::Boxes& boxes, double r_max_m) const;
   // In front of the box and moving away in depth, with gravity not pulling it back (the camera's
-  // forward axis tilted toward the ground can): no threat, without a solve.
+  // forward axis tilted toward the ground can) is no threat, without a solve.
   bool receding(const Eigen::Vector3d& d, const Eigen::Vector3d& w, double r) const {
     return d.z() > front_m + r && w.z() >= 0.0 && half_g.z() >= 0.0;
   }
   // Whether fragment i, left unsettled by the rejection, needs the exact solve.
   bool needs_solve(std::size_t i) const;
-  // The exact solve of one fragment the rejections left in doubt: whether it is a candidate and
+  // The exact solve of one fragment the rejections left in doubt, whether it is a candidate and
   // the force it asks for, if any. It reads only the step's constants and the fragment, so
   // fragments may be solved on any workers at once.
   SolveAnswer solve(std::size_t i, bool grown_clear) const;
-  // The robust models' part of it: the worst case over the look-ahead window, and whether the
+  // The robust models' part of it, the worst case over the look-ahead window and whether the
   // constant model's push may wait a step.
   SolveAnswer solve_worst_case(const FragmentState& f, const PathInBox& path,
                                bool grown_clear) const;
   // `answer` with a push of force_N.
   static SolveAnswer pushed(SolveAnswer answer, const Eigen::Vector3d& force_N);
-  // A solve's answer into out: the candidate, then its force through the cap.
+  // A solve's answer into out, the candidate, then its force through the cap.
   void emit(std::size_t i, const SolveAnswer& answer, StepOutput& out) const;
 };
 
@@ -533,14 +533,14 @@ EdgeMinStrategy::Step::Step(const StepContext& context, const EdgeMinParams& edg
   lo_m = Eigen::Vector3d(-half_w_m, -half_h_m, -back_m);
   hi_m = Eigen::Vector3d(half_w_m, half_h_m, front_m);
 
-  // The robust models' regions (see the header): about the constant-velocity path (bounded_accel)
+  // The robust models' regions (see the header), about the constant-velocity path (bounded_accel)
   // and about the eye now (V_c; both models). Each side grows by the chord of the view's turn, at
   // most to the ball every orientation of the box lies in (Inflation), so any turn rate is safe.
   robust = params.camera_model != CameraModel::kConstant;
   const double rot_m = norm3(Eigen::Vector3d(half_w_m, half_h_m, std::max(front_m, back_m)));
   const std::array<double, 6> turn_cap_m = turn_caps_m(lo_m, hi_m, rot_m);
   ball_known = std::isfinite(ctx.camera_max_speed_mps) && ctx.camera_max_speed_mps >= 0;
-  // Neither bound known (a library caller may pass V_c = inf): assume the parameters' bound.
+  // With neither bound known (a library caller may pass V_c = inf), the parameters' is assumed.
   const double accel_mps2 = std::isfinite(assumed_accel_mps2) || ball_known
                                 ? assumed_accel_mps2
                                 : params.camera_accel_mps2;
@@ -581,14 +581,14 @@ TwoBoxClearance::Boxes EdgeMinStrategy::Step::rejection_boxes() const {
 void EdgeMinStrategy::Step::set_window(TwoBoxClearance::Boxes& boxes, double r_max_m) const {
   const Inflation& rho = reject_rho();
   boxes.window_s = window_s(r_max_m);
-  // Each side's growth only increases with time: its value at the window's end bounds it.
+  // Each side's growth only increases with time, so its value at the window's end bounds it.
   for (int k = 0; k < 3; ++k) {
     boxes.grow_lo_m[k] = rho.at(boxes.window_s, rho.cap_m(k, -1));
     boxes.grow_hi_m[k] = rho.at(boxes.window_s, rho.cap_m(k, +1));
   }
-  // And piece by piece (its growth at its end, times as TwoBoxClearance computes them): the
-  // growth at the window's end is several times that of a path passing early in it, and the
-  // paths the whole window leaves in doubt are mostly such.
+  // And piece by piece (its growth at its end, times as TwoBoxClearance computes them), as the
+  // growth at the window's end is several times that of a path passing early in it, and the paths
+  // the whole window leaves in doubt are mostly such.
   boxes.pieces = TwoBoxClearance::Boxes::kMaxPieces;
   for (int j = 0; j < boxes.pieces; ++j) {
     const double end_s = boxes.window_s * (j + 1) / boxes.pieces;
@@ -621,7 +621,7 @@ EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve(std::size_t i, bool gr
   path.d = cam.to_camera(f.position_m);
   path.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
   const double r = f.radius_m;
-  // This fragment's look-ahead: until its path reaches the ground.
+  // This fragment's look-ahead lasts until its path reaches the ground.
   const double ground_s = time_to_ground_s(f.position_m.y(), f.velocity_mps.y(),
                                            0.5 * ctx.gravity_mps2.y(), ctx.ground_height_m + r);
   path.own_horizon_s = std::max(std::min(ground_s, cap_s), ctx.dt_s);
@@ -634,8 +634,8 @@ EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve(std::size_t i, bool gr
     path.nominal = nominal_push(path.x, path.y, path.z, path.slabs, path.own_horizon_s, ctx.dt_s);
   }
   path.best = chosen(path.nominal.need, way_weights, weighted);
-  // Already inside the box's shadow on every side: nothing finite helps; push toward the
-  // nearest way out at the cap and let the report count it if it still hits.
+  // Already inside the box's shadow on every side, nothing finite helps, so the push goes toward
+  // the nearest way out at the cap and the report counts it if it still hits.
   path.a_nominal = !path.nominal.threat                          ? 0.0
                    : std::isfinite(path.nominal.need[path.best]) ? path.nominal.need[path.best]
                                                                  : 2.0 * params.a_max_mps2 + 1.0;
@@ -659,7 +659,7 @@ EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve_worst_case(const Fragm
   std::size_t n_cons = 0;
   if (use_accel) cons_store[n_cons++] = {{path.x, path.y, path.z}, &accel_rho};
   if (ball_known) {
-    // About the eye now: the fragment's own velocity, not the relative one.
+    // About the eye now, with the fragment's own velocity, not the relative one.
     const Eigen::Vector3d v = cam.dir_to_camera(f.velocity_mps);
     cons_store[n_cons++] = {{Coord{d.x(), v.x(), half_g.x()}, Coord{d.y(), v.y(), half_g.y()},
                              Coord{d.z(), v.z(), half_g.z()}},
@@ -672,9 +672,9 @@ EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve_worst_case(const Fragm
   answer.candidate = true;
   if (now.threat) {
     // Would waiting a step still be safe? During it the constant model's push (as capped) acts,
-    // moving the fragment by a dt t along its axis; from the next step on, a push of at most
-    // a_max moves it D(t - dt) per unit. Only that axis's times inside the boxes change.
-    // Without a push the next step's worst case is this one's: no copies then.
+    // moving the fragment by a dt t along its axis; from the next step on, a push of at most a_max
+    // moves it D(t - dt) per unit. Only that axis's times inside the boxes change. Without a push
+    // the next step's worst case is this one's, so nothing is copied.
     std::span<const Constraint> wait_cons = cons;
     const GrownSets* wait_sets = &now;
     std::array<Constraint, 2> pushed_cons;
@@ -706,9 +706,9 @@ EdgeMinStrategy::SolveAnswer EdgeMinStrategy::Step::solve_worst_case(const Fragm
       const std::size_t wc_best = chosen(wc_need, way_weights, weighted);
       const double a_wc =
           std::isfinite(wc_need[wc_best]) ? wc_need[wc_best] : 2.0 * params.a_max_mps2 + 1.0;
-      // When no push within a_max beats the worst case, nothing is promised for this fragment
-      // any more: the capped push then goes the constant model's way out, which saves it from
-      // the likeliest camera (one that keeps its velocity and view) instead of losing to both.
+      // When no push within a_max beats the worst case, nothing is promised for this fragment, so
+      // the capped push goes the constant model's way out, which saves it from the likeliest camera
+      // (one that keeps its velocity and view) instead of losing to both.
       const bool beaten = !(a_wc <= params.a_max_mps2);
       const std::size_t way = beaten && path.nominal.threat ? best : wc_best;
       return pushed(answer, f.mass_kg * std::max(a_nominal, a_wc) * dir[way]);
@@ -726,14 +726,14 @@ void EdgeMinStrategy::Step::emit(std::size_t i, const SolveAnswer& answer, StepO
   }
 }
 
-// Cheap rejection of every fragment at once before any root solve (two_box_clearance.hpp): a path
-// that never has all three coordinates inside the box grown by the fragment's radius, with a
-// margin the solves below agree with, over the fragment's own look-ahead, is no threat; for the
-// robust models likewise the grown box over the window (section 4 of docs/camera_models.md).
-// Most fragments end here.
+// Cheap rejection of every fragment at once before any root solve (two_box_clearance.hpp). A path
+// that never has all three coordinates inside the box grown by the fragment's radius, with a margin
+// the solves below agree with, over the fragment's own look-ahead, is no threat; for the robust
+// models likewise the grown box over the window (section 4 of docs/camera_models.md). Most
+// fragments end here.
 void EdgeMinStrategy::reject_cheaply(Step& s) {
   TwoBoxClearance::Boxes boxes = s.rejection_boxes();
-  // The window and the growth depend on the largest radius, known only after the pass: the last
+  // The window and the growth depend on the largest radius, known only after the pass, so the last
   // step's is used (a window and growth at least the solves' keep the rejection conservative, as
   // both grow with the radius), and the pass repeated in the rare step whose fragments are larger.
   // The hint changes how fast a step is, never what it answers.
@@ -760,7 +760,7 @@ void EdgeMinStrategy::reject_cheaply(Step& s) {
   s.unsettled = clearance_.unsettled();
 }
 
-// In chunks on the workers when there are some: the same answers (TwoBoxClearance::run).
+// In chunks on the workers when there are some, with the same answers (TwoBoxClearance::run).
 void EdgeMinStrategy::run_rejection(const StepContext& ctx, const TwoBoxClearance::Boxes& boxes) {
   if (ctx.parallel != nullptr) {
     clearance_.run(ctx.fragments, boxes, ctx.parallel);
@@ -769,10 +769,10 @@ void EdgeMinStrategy::run_rejection(const StepContext& ctx, const TwoBoxClearanc
   }
 }
 
-// The per-step budget: over max_solves fragments left to solve, the most urgent are solved and
-// the rest deferred to a later step, keeping the force they were last given (a constant push is
-// a plan until arrival: dropping it half way loses what it already did, and the urgent ones,
-// which a stale push could fail, are the ones solved).
+// The per-step budget. Over max_solves fragments left to solve, the most urgent are solved and the
+// rest deferred to a later step, keeping the force they were last given (a constant push is a plan
+// until arrival, so dropping it half way loses what it already did; and the urgent ones, which a
+// stale push could fail, are the ones solved).
 void EdgeMinStrategy::defer_beyond_budget(const Step& s, StepOutput& out) {
   const StepContext& ctx = s.ctx;
   const std::size_t n = ctx.fragments.size();
@@ -782,19 +782,19 @@ void EdgeMinStrategy::defer_beyond_budget(const Step& s, StepOutput& out) {
   for (const std::int32_t u : s.unsettled) {
     const auto i = static_cast<std::size_t>(u);
     if (!s.needs_solve(i)) continue;
-    // Time to arrival: distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w;
-    // a fragment not closing in is last (+inf).
+    // Time to arrival is distance to the eye over the closing speed -d.w / |d|, so |d|^2 / -d.w,
+    // and a fragment not closing in is last (+inf).
     const FragmentState& f = ctx.fragments[i];
     const Eigen::Vector3d d = f.position_m - s.cam.eye_m;
     const double closing = -dot3(d, f.velocity_mps - ctx.camera_velocity_mps);
     const double arrival_s = closing > 0.0 ? squared_norm3(d) / closing : kInf;
-    // Threats to the protected box on the current path (not cleared of it) before those only
-    // the grown box keeps in doubt: the camera keeping its velocity is the likelier future.
+    // Threats to the protected box on the current path (not cleared of it) before those only the
+    // grown box keeps in doubt, as the camera keeping its velocity is the likelier future.
     queue_.push_back({s.clears[i] ? 1 : 0, arrival_s, static_cast<int>(i)});
   }
   const auto cap = static_cast<std::size_t>(params_.max_solves);
   if (queue_.size() > cap) {
-    // (tier, arrival, index) is a total order: the same set is solved whatever the sort does.
+    // (tier, arrival, index) is a total order, so the same set is solved whatever the sort does.
     std::nth_element(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(cap),
                      queue_.end());
     for (std::size_t k = cap; k < queue_.size(); ++k) {
@@ -811,7 +811,7 @@ void EdgeMinStrategy::solve_in_order(const Step& s, StepOutput& out) const {
   }
 }
 
-// Each answer to its own slot on the workers, then into out in the fragments' order: the same
+// Each answer to its own slot on the workers, then into out in the fragments' order, for the same
 // candidates, forces, capped and guarded as one after the other.
 void EdgeMinStrategy::solve_on_workers(const Step& s, StepOutput& out) {
   const std::span<const std::int32_t> unsettled = s.unsettled;
@@ -829,7 +829,7 @@ void EdgeMinStrategy::solve_on_workers(const Step& s, StepOutput& out) {
   }
 }
 
-// Every fragment in order: a deferred one keeps its last force, the others are solved where the
+// Every fragment in order. A deferred one keeps its last force, the others are solved where the
 // rejection left them in doubt, and what each was given is kept for a later step that defers it.
 void EdgeMinStrategy::solve_within_budget(const Step& s, StepOutput& out) {
   const std::size_t n = s.ctx.fragments.size();
@@ -860,7 +860,7 @@ void EdgeMinStrategy::step(const StepContext& ctx, StepOutput& out) {
   } else {
     solve_on_workers(s, out);
   }
-  // The occlusion bound on top: its prediction includes the pushes above.
+  // The occlusion bound goes on top; its prediction includes the pushes above.
   if (params_.cover_max < 1.0) cover_.step(ctx, params_, way_weights_, out);
 }
 

@@ -24,8 +24,8 @@ struct EdgeParams {
   Reach reach = Reach::kThesis;
   Horizon horizon = Horizon::kCamera;
   Replan replan = Replan::kNever;
-  // t_G's fallback and cap: a path that never falls through the horizon height is examined this
-  // far ahead (the thesis used the scene's end; a game has none, so this is a setting).
+  // The fallback and cap for t_G. A path that never falls through the horizon height is examined
+  // this far ahead (the thesis used the scene's end; a game has none, so this is a setting).
   double horizon_cap_s = 3.0;
 };
 

@@ -20,7 +20,7 @@ void EdgeStrategy::reset(int fragment_count) {
   pushed_.assign(static_cast<std::size_t>(fragment_count), 0);
   predicted_.assign(static_cast<std::size_t>(fragment_count), 0);
   last_contact_s_.assign(static_cast<std::size_t>(fragment_count), kNoContact);
-  // The work space too, its pages touched: the explosion's first step examines every fragment,
+  // The work space too, its pages touched, as the explosion's first step examines every fragment
   // and must not spend its time on page faults (geometry/work_space.hpp).
   reserve(fragment_count);
 }
@@ -85,7 +85,7 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   query.predictor = params_.predictor;
   query.dt_s = ctx.dt_s;
   query.y_ref_m = params_.horizon == Horizon::kCamera ? cam.eye_m.y() : ctx.ground_height_m;
-  // t_G's fallback and cap: the parameter (a game has no scene end), or the shot's end if sooner.
+  // t_G's fallback and cap is the parameter (a game has no scene end), or the shot's end if sooner.
   query.remaining_s = std::max(std::min(params_.horizon_cap_s, ctx.end_time_s - ctx.t_s), 0.0);
   query.reach = params_.reach;
   query.max_speed_mps = ctx.camera_max_speed_mps;
@@ -93,9 +93,9 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
   const double half_w_m = cam.near_half_width_m();
   const double half_h_m = cam.near_half_height_m();
 
-  // Every fragment to examine is predicted at once (ContactPredictor: the same answers as one at
-  // a time, with the cheap rejection batched). A fragment that was a candidate a step ago is
-  // nearly always one still: trying the rejection on it would only cost time.
+  // Every fragment to examine is predicted at once (ContactPredictor gives the same answers as one
+  // at a time, with the cheap rejection batched). A fragment that was a candidate a step ago is
+  // nearly always one still, so trying the rejection on it would only cost time.
   examined_.clear();
   screen_.clear();
   guess_s_.clear();
@@ -103,11 +103,11 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     if (!should_examine(ctx, i)) continue;
     examined_.push_back(static_cast<int>(i));
     screen_.push_back(predicted_[i] ? 0 : 1);
-    // Where the last step's contact is now: the search starts there (NaN: no guess).
+    // The search starts where the last step's contact is now (NaN means no guess).
     guess_s_.push_back(last_contact_s_[i] - ctx.dt_s);
   }
-  // Within a step of the guess: the contact moves by about -dt a step, the push's own effect on
-  // it is a fraction of that.
+  // A quarter step either side of the guess, which already takes the contact's move of about -dt
+  // a step; the push's own effect on it is a fraction of that.
   const auto predictions =
       predictor_.predict(query, ctx.fragments, examined_, screen_, guess_s_, 0.25 * ctx.dt_s);
 
@@ -122,14 +122,14 @@ void EdgeStrategy::step(const StepContext& ctx, StepOutput& out) {
     out.activity.candidates.push_back(static_cast<int>(i));
     const FragmentState& f = ctx.fragments[i];
 
-    // Direction: toward the near rectangle's edge nearest to where the path will cross it; a
-    // path that will not cross (already past, or moving away) is judged where it is now.
+    // The push is toward the near rectangle's edge nearest to where the path will cross it. A path
+    // that will not cross (already past, or moving away) is judged where it is now.
     const Eigen::Vector3d dir =
         crossing_edge_direction(query.path(f), cam, ctx.camera_velocity_mps, pred.t_horizon_s,
                                 f.position_m, half_w_m, half_h_m);
 
-    // Magnitude (3.4): k |V_pc| / (|P_pc|^2 (t_C - t)). Both denominators vanish at the camera:
-    // they are kept at least one step and one contact distance, and the result is capped.
+    // Magnitude (3.4) is k |V_pc| / (|P_pc|^2 (t_C - t)). Both denominators vanish at the camera,
+    // so they are kept at least one step and one contact distance, and the result capped.
     const double contact_radius_m = query.model(f).radius_m;
     const double rel_speed_mps = norm3(f.velocity_mps - ctx.camera_velocity_mps);
     double dist_m = norm3(f.position_m - cam.eye_m);

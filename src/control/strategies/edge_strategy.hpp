@@ -1,9 +1,9 @@
 #pragma once
-// `edge`: the thesis's method (docs/method.md section 3). At t = 0 every fragment's ballistic path
-// is tested against the ball the camera can reach before the fragment lands; only the fragments
-// that pass (the candidates) are examined in later steps, each getting the force (3.4) toward the
-// near rectangle's edge nearest to where its path crosses the near plane, until it stops being a
-// candidate.
+// `edge` is the thesis's method (docs/method.md section 3). At t = 0 every fragment's ballistic
+// path is tested against the ball the camera can reach before the fragment lands; only the
+// fragments that pass (the candidates) are examined in later steps, each getting the force (3.4)
+// toward the near rectangle's edge nearest to where its path crosses the near plane, until it stops
+// being a candidate.
 
 #include <span>
 #include <vector>
@@ -24,13 +24,12 @@ class EdgeStrategy final : public Strategy {
   void reset(int fragment_count) override;
   void step(const StepContext& ctx, StepOutput& out) override;
 
-  // For a caller whose fragments come and go between steps (the controller library): re-index
-  // the run state to the coming step's fragment list. previous[i] is the index fragment i had in
-  // the last step, or -1 for a fragment new to the run, which is examined at its first step as
-  // every fragment is at t = 0. Fragments absent from `previous` are forgotten. Without this
-  // call the fragment list is taken to be the same as at the last step.
-  // Within the room reserve() made, it allocates nothing; undo_carry_over() puts back the state
-  // of before the last carry_over.
+  // For a caller whose fragments come and go between steps (the controller library), re-indexes the
+  // run state to the coming step's fragment list. previous[i] is the index fragment i had in the
+  // last step, or -1 for a fragment new to the run, which is examined at its first step as every
+  // fragment is at t = 0. Fragments absent from `previous` are forgotten. Without this call the
+  // fragment list is taken to be the same as at the last step. Within the room reserve() made, it
+  // allocates nothing; undo_carry_over() puts back the state of before the last carry_over.
   void carry_over(std::span<const int> previous);
   void undo_carry_over();
   void reserve(int fragment_count) override;
@@ -43,7 +42,7 @@ class EdgeStrategy final : public Strategy {
   ResourceVector<char> candidate_{mem_};  // examined again next step
   ResourceVector<char> pushed_{mem_};     // got a force in the last step
   ResourceVector<char> predicted_{mem_};  // was a candidate by the last prediction (not reset's)
-  // The contact time the last prediction found (NaN: none), relative to that step: a step later
+  // The contact time the last prediction found (NaN if none), relative to that step. A step later
   // the contact is near it less dt, where its root search starts (first_nonpositive_near).
   ResourceVector<double> last_contact_s_{mem_};
   // The four above as they were before the last carry_over.

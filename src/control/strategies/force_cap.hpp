@@ -1,6 +1,6 @@
 #pragma once
-// The acceleration cap every force-applying strategy goes through: no imposed acceleration above
-// a_max, and no non-finite force ever reaches the physics.
+// Every force-applying strategy goes through this acceleration cap, so no imposed acceleration
+// exceeds a_max and no non-finite force ever reaches the physics.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -21,8 +21,8 @@ inline void apply_capped(StepOutput& out, int fragment, const Eigen::Vector3d& f
   }
   const double limit_N = mass_kg * a_max_mps2;
   double norm_N = norm3(force_N);
-  // The squares overflow above about 1e154 N and vanish below about 1e-154 N: there the norm is
-  // taken with scaling. Elsewhere the plain norm, whose bits the pinned results rely on.
+  // The squares overflow above about 1e154 N and vanish below about 1e-154 N, so there the norm is
+  // taken with scaling. Elsewhere it is the plain norm, whose bits the pinned results rely on.
   if (!std::isfinite(norm_N) || norm_N < 1e-150) norm_N = force_N.stableNorm();
   if (norm_N == 0.0) return;
   // A force built as exactly m a_max (deflect-all) must not count as capped through rounding.

@@ -1,6 +1,6 @@
 #pragma once
-// A set of at most a few disjoint time intervals, in order: the times a path spends inside one of
-// edge-min's slabs (slab_times.hpp), and what intersecting them leaves.
+// A set of at most a few disjoint time intervals, in order, such as the times a path spends inside
+// one of edge-min's slabs (slab_times.hpp) and what intersecting them leaves.
 
 #include <algorithm>
 #include <array>
@@ -9,10 +9,10 @@
 namespace fragsim {
 
 // Room for every set the constant model makes (a parabola meets a slab in at most two pieces;
-// intersections of two and three such sets in at most seven); past that, the last piece is widened
-// to hold the rest: more times at which a push must clear the box, never fewer. Only the first n
-// pieces are set: a set is made and copied several times per exact solve, and clearing the rest
-// cost as much as filling it.
+// intersections of two and three such sets in at most seven). Past that, the last piece is widened
+// to hold the rest, giving more times at which a push must clear the box, never fewer. Only the
+// first n pieces are set, as a set is made and copied several times per exact solve and clearing
+// the rest costs as much as filling it.
 struct Intervals {
   std::array<std::array<double, 2>, 8> span;
   int n = 0;

@@ -1,16 +1,16 @@
 #pragma once
-// The operations of the batched passes written once for either width: two lanes (SSE2,
-// lanes.hpp, the x86-64 baseline) and, where the processor has AVX2, four, through GCC's vector
-// extension in functions compiled for AVX2 (chosen at run time with has_wide_lanes()). Templates
-// over NarrowOps and WideOps perform the same IEEE operations in the same order at either width
-// (no FMA: -ffp-contract=off, and "avx2" does not enable it), so they give the same answers, bit
-// for bit. Used by edge-min's rejection (two_box_clearance.cpp) and its exact solve's slab times
+// The operations of the batched passes, written once for two widths, two lanes (SSE2, lanes.hpp,
+// the x86-64 baseline) and, where the processor has AVX2, four, through GCC's vector extension in
+// functions compiled for AVX2 (chosen at run time with has_wide_lanes()). Templates over NarrowOps
+// and WideOps perform the same IEEE operations in the same order at either width (no FMA, given
+// -ffp-contract=off, and "avx2" does not enable it), so they give the same answers, bit for bit.
+// Used by edge-min's rejection (two_box_clearance.cpp) and its exact solve's slab times
 // (slab_times.cpp).
 //
-// WideOps exists only where FRAGSIM_WIDE_LANES is defined: GCC on x86-64 (Clang refuses AVX
-// vectors outside AVX code even where they are inlined into it; it builds only the fuzzers here).
-// An includer keeps -Wpsabi off to its end: the four-lane type only ever lives in AVX2 code, and
-// the templates are instantiated in the including file.
+// WideOps exists only where FRAGSIM_WIDE_LANES is defined, GCC on x86-64 (Clang refuses AVX vectors
+// outside AVX code even where they are inlined into it; it builds only the fuzzers here). An
+// includer keeps -Wpsabi off to its end, as the four-lane type only ever lives in AVX2 code and the
+// templates are instantiated in the including file.
 
 #include <cstdint>
 #include <cstring>
@@ -95,8 +95,8 @@ struct WideOps {
   [[gnu::always_inline]] static V select(const M& m, const V& a, const V& b) {
     return m.bits ? a : b;
   }
-  // std::min and std::max, as lanes::min and lanes::max: b < a ? b : a is what vminpd(b, a)
-  // computes, NaN and signed zeros included, and GCC emits it for this form.
+  // std::min and std::max, as lanes::min and lanes::max. vminpd(b, a) computes b < a ? b : a, NaN
+  // and signed zeros included, and GCC emits it for this form.
   [[gnu::always_inline]] static V min(const V& a, const V& b) { return b < a ? b : a; }
   [[gnu::always_inline]] static V max(const V& a, const V& b) { return a < b ? b : a; }
   [[gnu::always_inline]] static V abs(const V& x) {
@@ -110,20 +110,20 @@ struct WideOps {
     return {reinterpret_cast<WideMask>(a != b)};
   }
   [[gnu::always_inline]] static M none_of(const M& m) { return {~m.bits}; }
-  // Two SSE2 halves: an AVX intrinsic here could not be inlined into the generic templates that
-  // call it (each square root correctly rounded either way).
+  // Two SSE2 halves, as an AVX intrinsic here could not be inlined into the generic templates that
+  // call it (each square root is correctly rounded either way).
   [[gnu::always_inline]] static V sqrt(const V& x) {
     const lanes::Lanes lo = lanes::sqrt(lanes::Lanes{x[0], x[1]});
     const lanes::Lanes hi = lanes::sqrt(lanes::Lanes{x[2], x[3]});
     return V{lo[0], lo[1], hi[0], hi[1]};
   }
-  // As lanes::copysign: the magnitude's bits but the sign bit, and the sign's sign bit.
+  // As lanes::copysign, the magnitude's bits but the sign bit, and the sign's sign bit.
   [[gnu::always_inline]] static V copysign(const V& mag, const V& sign) {
     const WideMask magnitude = WideMask{} + INT64_MAX;
     return reinterpret_cast<V>((reinterpret_cast<WideMask>(mag) & magnitude) |
                                (reinterpret_cast<WideMask>(sign) & ~magnitude));
   }
-  // SSE2's movmskpd on each half, as for sqrt: lane by lane, GCC extracts and masks each one.
+  // SSE2's movmskpd on each half, as for sqrt, since lane by lane GCC extracts and masks each.
   [[gnu::always_inline]] static int bits(const M& m) {
     using Half = std::int64_t __attribute__((vector_size(16)));
     const Half lo{m.bits[0], m.bits[1]};

@@ -1,14 +1,14 @@
 #pragma once
 // Two doubles computed together, for the batched passes of the cheap rejection
-// (cheap_rejection.hpp) and the prediction (collision_prediction.cpp). Why not plain loops: GCC
-// cannot vectorise a loop calling std::sqrt while math-errno is on (the default), and a branch
-// per fragment keeps the processor from overlapping fragments. Two lanes are one SSE2 register,
-// the x86-64 baseline; a wider vector changes the calling convention without AVX (-Wpsabi).
+// (cheap_rejection.hpp) and the prediction (collision_prediction.cpp). Not plain loops, as GCC
+// cannot vectorise a loop calling std::sqrt while math-errno is on (the default), and a branch per
+// fragment keeps the processor from overlapping fragments. Two lanes are one SSE2 register, the
+// x86-64 baseline; a wider vector changes the calling convention without AVX (-Wpsabi).
 //
-// Arithmetic is GCC's and Clang's vector extension (+, -, *, / lane by lane, the same IEEE
-// results as on a double). Comparisons, masks and selection go through SSE2's own instructions:
-// in vector-extension form GCC 12 turns them into conditionals that it lowers, lacking SSE4.1,
-// to a scalar cmov per lane.
+// Arithmetic is GCC's and Clang's vector extension (+, -, *, / lane by lane, the same IEEE results
+// as on a double). Comparisons, masks and selection go through SSE2's own instructions, since in
+// vector-extension form GCC 12 turns them into conditionals that it lowers, lacking SSE4.1, to a
+// scalar cmov per lane.
 
 #include <cmath>
 #include <cstring>
@@ -52,7 +52,7 @@ inline Mask operator~(Mask a) {
 inline Mask& operator|=(Mask& a, Mask b) {
   return a = a | b;
 }
-// The comparisons, false where a lane is NaN (ne: true), as on doubles.
+// The comparisons, false where a lane is NaN (true for ne), as on doubles.
 inline Mask lt(Lanes a, Lanes b) {
   return {_mm_cmplt_pd(a, b)};
 }
@@ -94,7 +94,7 @@ inline Lanes copysign(Lanes mag, Lanes sign) {
   return _mm_or_pd(_mm_andnot_pd(bit, mag), _mm_and_pd(bit, sign));
 }
 
-#else  // any other target: the vector extension throughout
+#else  // any other target uses the vector extension throughout
 
 struct Mask {
   decltype(Lanes{} < Lanes{}) bits;
@@ -152,8 +152,8 @@ inline Lanes copysign(Lanes mag, Lanes sign) {
 
 #endif
 
-// std::min and std::max, lane by lane, returning the same lane on ties and NaNs:
-// std::min(a, b) is b < a ? b : a, which minpd(b, a) computes, and likewise for max.
+// std::min and std::max, lane by lane, returning the same lane on ties and NaNs, as std::min(a, b)
+// is b < a ? b : a, which minpd(b, a) computes, and likewise for max.
 #if defined(__SSE2__)
 inline Lanes min(Lanes a, Lanes b) {
   return _mm_min_pd(b, a);

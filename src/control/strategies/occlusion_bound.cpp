@@ -18,8 +18,8 @@ double per_accel(double t_s, double dt_s) {
   return 0.5 * (t_s * t_s + t_s * dt_s);
 }
 
-// The radius of the disc of a box's mean projected area: the mean shadow of a convex body is a
-// quarter of its surface area, 8 (ab + bc + ca) for half extents a, b, c.
+// The radius of the disc of a box's mean projected area. The mean shadow of a convex body is a
+// quarter of its surface area 8 (ab + bc + ca) for half extents a, b, c.
 double disc_radius_m(const Eigen::Vector3d& half_m) {
   const double a = half_m.x();
   const double b = half_m.y();
@@ -68,7 +68,7 @@ int OcclusionBound::paint(int sample, const Disc& d, int delta) {
   return own;
 }
 
-// One fragment's camera-space path pieces: x(t) = d + w t + A (t^2 + t dt) / 2.
+// One fragment's camera-space path pieces, for x(t) = d + w t + A (t^2 + t dt) / 2.
 struct OcclusionBound::Path {
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
@@ -78,21 +78,21 @@ struct OcclusionBound::Path {
   bool valid = false;
 };
 
-// Where a fragment's disc is drawn: the region's half sizes per metre of depth (NDC in units of
-// the region's half size), and the near plane. Small, so that the loops that draw keep a copy in
-// registers rather than reading it through the step after each call that paints.
+// Where a fragment's disc is drawn, given by the region's half sizes per metre of depth (NDC in
+// units of the region's half size) and the near plane. It is small so the loops that draw keep a
+// copy in registers rather than reading it through the step after each call that paints.
 struct OcclusionBound::Screen {
   double sx = 0.0;
   double sy = 0.0;
   double near_m = 0.0;
 
-  // A fragment's disc at camera-space position p: absent when wholly behind the near plane.
+  // A fragment's disc at camera-space position p, absent when wholly behind the near plane.
   Disc disc_at(const Eigen::Vector3d& p, double rho) const;
 };
 
-// One step's constants, and where the pushes go: out, and each fragment's place in out.forces
-// (slot, -1 for none), which starts with the push already given this step (edge-min's, against
-// the camera): part of the path.
+// One step's constants, and where the pushes go, out and each fragment's place in out.forces (slot,
+// -1 for none). out starts with the push already given this step (edge-min's, against the camera)
+// as part of the path.
 struct OcclusionBound::Step {
   Step(const StepContext& context, const EdgeMinParams& edge_min,
        const std::array<double, 4>& way_weights, StepOutput& output, int samples,
@@ -138,7 +138,7 @@ OcclusionBound::Step::Step(const StepContext& context, const EdgeMinParams& edge
 
 OcclusionBound::Disc OcclusionBound::Screen::disc_at(const Eigen::Vector3d& p, double rho) const {
   Disc d;
-  if (!(p.z() + rho > near_m)) return d;  // wholly behind the near plane: nothing drawn
+  if (!(p.z() + rho > near_m)) return d;  // wholly behind the near plane, so nothing is drawn
   const double ze = std::max(p.z(), near_m);
   d.x = p.x() / (ze * sx);
   d.y = p.y() / (ze * sy);
@@ -148,11 +148,11 @@ OcclusionBound::Disc OcclusionBound::Screen::disc_at(const Eigen::Vector3d& p, d
   return d;
 }
 
-// The sample times, as steps ahead: every step for the first 2 B, then every 2nd step for the
-// next 2 B steps, every 4th for the next 4 B, ... (B = cover_samples), each on steps of the
-// run that are multiples of its stride. Then a step once sampled stays sampled as it comes
-// nearer (a multiple of 2^k is one of 2^(k-1)): the step a push was planned for is checked
-// again on every later step, so the plan is kept rather than lost between samples.
+// The sample times, as steps ahead, are every step for the first 2 B, then every 2nd step for the
+// next 2 B steps, every 4th for the next 4 B, ... (B = cover_samples), each on steps of the run
+// that are multiples of its stride. Then a step once sampled stays sampled as it comes nearer (a
+// multiple of 2^k is one of 2^(k-1)), so the step a push was planned for is checked again on every
+// later step, and the plan is kept rather than lost between samples.
 int OcclusionBound::sample_times(const StepContext& ctx, const EdgeMinParams& params) {
   const double dt = ctx.dt_s;
   const long long last_step =
@@ -160,8 +160,8 @@ int OcclusionBound::sample_times(const StepContext& ctx, const EdgeMinParams& pa
   ResourceVector<long long> steps(mem_);
   const long long dense = 2LL * params.cover_samples;
   const long long now = std::max(0, ctx.step);
-  // Band by band (stride 1 for d < dense, then stride s for dense s / 2 <= d < dense s), only
-  // the sampled steps: the samples grow with the log of the horizon in steps, and a horizon of a
+  // Band by band (stride 1 for d < dense, then stride s for dense s / 2 <= d < dense s), only the
+  // sampled steps, as the samples grow with the log of the horizon in steps, and a horizon of a
   // billion steps (a long cover_horizon_s at a tiny dt) must not cost a billion iterations.
   for (long long stride = 1, lo = 1; lo <= last_step; lo = dense * stride, stride *= 2) {
     const long long hi = std::min(last_step, dense * stride - 1);
@@ -177,9 +177,9 @@ int OcclusionBound::sample_times(const StepContext& ctx, const EdgeMinParams& pa
 std::size_t OcclusionBound::make_grid(const CameraPose& cam, const EdgeMinParams& params,
                                       std::size_t n, int k_samples) {
   cols_ = params.cover_cells;
-  // Square cells on screen, but at most 16 rows per column: a screen taller than 16 times its width
-  // gets taller cells, so the grid's cost is bounded for any aspect (and the row count fits an
-  // int before it is rounded).
+  // Square cells on screen, but at most 16 rows per column. A screen taller than 16 times its width
+  // gets taller cells, so the grid's cost is bounded for any aspect (and the row count fits an int
+  // before it is rounded).
   const double rows = std::min(cols_ / cam.aspect, 16.0 * cols_);
   rows_ = std::max(1, static_cast<int>(std::lround(rows)));
   const std::size_t cells = static_cast<std::size_t>(rows_) * static_cast<std::size_t>(cols_);
@@ -201,11 +201,11 @@ void OcclusionBound::add_force(Step& s, std::size_t i, const Eigen::Vector3d& fo
   }
 }
 
-// What a push added it takes back once the fragment is behind the camera and moving away, where
-// it cannot be seen again (the camera keeping its velocity): the sideways speed a push left
-// would otherwise carry the fragment ever farther from its own path, which is the deviation
-// the bound costs. At most a_max, above the camera body's back by the fragment's radius and a
-// margin, so the braking fragment cannot touch the camera.
+// What a push added it takes back once the fragment is behind the camera and moving away, where it
+// cannot be seen again (the camera keeping its velocity), as the sideways speed a push left would
+// otherwise carry the fragment ever farther from its own path, which is the deviation the bound
+// costs. At most a_max, above the camera body's back by the fragment's radius and a margin, so the
+// braking fragment cannot touch the camera.
 void OcclusionBound::brake_behind_camera(Step& s) {
   const StepContext& ctx = s.ctx;
   const CameraPose& cam = s.cam;
@@ -248,8 +248,8 @@ void OcclusionBound::draw_paths(const Step& s, ResourceVector<Path>& paths) {
     p.d = cam.to_camera(f.position_m);
     p.w = cam.dir_to_camera(f.velocity_mps - ctx.camera_velocity_mps);
     p.a = cam.dir_to_camera(accel);
-    // A fragment known only by its bounding sphere (the controller library's) is that sphere's
-    // shadow: larger than its true mean shadow, so the bound errs toward clearing more.
+    // A fragment known only by its bounding sphere (the controller library's) is drawn as that
+    // sphere's shadow, larger than its true mean shadow, so the bound errs toward clearing more.
     p.rho = f.half_extents_m.isZero() ? f.radius_m : disc_radius_m(f.half_extents_m);
     p.valid = p.rho > 0.0 && p.d.allFinite() && p.a.allFinite();
     if (!p.valid) continue;
@@ -278,9 +278,9 @@ bool OcclusionBound::any_over(const Step& s) const {
   return false;
 }
 
-// One fragment's least push out of the region: per way, the least constant push that takes its
-// disc out at every over-bound sample it covers that a push within a_room can still clear; of
-// the ways, the least push over weight. {4, 0}: no way helps.
+// One fragment's least push out of the region, per way the least constant push that takes its disc
+// out at every over-bound sample it covers that a push within a_room can still clear, and of the
+// ways the least push over weight. {4, 0} means no way helps.
 std::pair<std::size_t, double> OcclusionBound::plan(const Step& s, const Path& p,
                                                     std::size_t i) const {
   const int k_samples = s.k_samples;
@@ -321,9 +321,9 @@ std::pair<std::size_t, double> OcclusionBound::plan(const Step& s, const Path& p
   return {best, best == 4 ? 0.0 : need[best]};
 }
 
-// The order fragments are taken in: those pushed last step first (a push is a plan until the
-// fragment is out, and a plan handed from fragment to fragment every step moves many a little
-// and clears none), then by cells covered per push.
+// Fragments pushed last step are taken first, then by cells covered per push, as a push is a plan
+// until the fragment is out, and a plan handed from fragment to fragment every step moves many a
+// little and clears none.
 void OcclusionBound::rank_fragments(const Step& s, const ResourceVector<Path>& paths,
                                     ResourceVector<std::tuple<int, double, int>>& order) {
   const std::size_t n = s.n;

@@ -1,7 +1,7 @@
 #pragma once
-// How a strategy runs its per-fragment work: in ranges on the game's workers (the C API's task
-// system), or all on the calling thread. A strategy that uses it writes each item's answer to the
-// item's own place and gathers them in item order afterwards, so that no answer depends on how
+// How a strategy runs its per-fragment work, either in ranges on the game's workers (the C API's
+// task system) or all on the calling thread. A strategy that uses it writes each item's answer to
+// the item's own place and gathers them in item order afterwards, so that no answer depends on how
 // the ranges fall or which worker ran them.
 
 #include <cstdint>

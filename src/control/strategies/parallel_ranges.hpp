@@ -1,6 +1,6 @@
 #pragma once
 // A callable over ranges of items through a ParallelFor (parallel_for.hpp), whose ranges are a
-// plain function and a context pointer: the callable is the context, a captureless lambda the
+// plain function and a context pointer, so the callable is the context, a captureless lambda the
 // function.
 
 #include <cstdint>
@@ -9,9 +9,9 @@
 
 namespace fragsim {
 
-// Calls body(begin, end, worker) over [0, item_count): in ranges of at least min_range items on
-// `parallel`'s workers, or as one range on worker 0 when parallel is nullptr (the calling
-// thread). Returns when every range is done.
+// Calls body(begin, end, worker) over [0, item_count), in ranges of at least min_range items on
+// `parallel`'s workers, or as one range on worker 0 (the calling thread) when parallel is nullptr.
+// Returns when every range is done.
 template <class Body>
 void for_ranges(const ParallelFor* parallel, std::int32_t item_count, std::int32_t min_range,
                 const Body& body) {

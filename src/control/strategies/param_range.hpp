@@ -1,7 +1,7 @@
 #pragma once
-// The legal values of a strategy's numeric parameter, as numbers: each parameters' struct
-// (edge_min_params.hpp, edge_params.hpp, deflect_all_params.hpp) lists one per field. It is the
-// one statement of each rule: the C API checks a def against it (api/input_checks.cpp) and the
+// The legal values of a strategy's numeric parameter, as numbers. Each parameters' struct
+// (edge_min_params.hpp, edge_params.hpp, deflect_all_params.hpp) lists one per field. This is the
+// only statement of each rule. The C API checks a def against it (api/input_checks.cpp) and the
 // tool builds its scene keys' ranges from it, so a def and a scene file refuse the same values.
 // Nothing here reads or writes text.
 
@@ -12,14 +12,14 @@
 namespace fragsim {
 
 struct ParamRange {
-  const char* name;   // the member of the parameters' struct (also its scene key): "margin_m"
-  const char* field;  // the C def's field it is set from ("edge_min.margin_m"); nullptr: none
+  const char* name;   // the member of the parameters' struct and its scene key, e.g. "margin_m"
+  const char* field;  // the C def's field it is set from ("edge_min.margin_m"), or nullptr
   double lo;
   double hi;
   bool lo_open = false;  // lo itself is refused
   bool hi_open = false;  // hi itself is refused
   bool inf_ok = false;   // +inf is legal besides [lo, hi] ("no bound")
-  bool whole = false;    // a whole-number member: lo and hi are whole numbers
+  bool whole = false;    // a whole-number member, so lo and hi are whole numbers
 
   // Whether `v` is legal. NaN and -inf never are; +inf only with inf_ok.
   constexpr bool admits(double v) const {

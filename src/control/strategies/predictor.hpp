@@ -6,7 +6,7 @@ namespace fragsim {
 
 enum class Predictor {
   kThesis,    // (3.1) with the velocity read from the physics.
-  kDiscrete,  // ODE's semi-implicit Euler: the parabola with velocity V + g dt/2.
+  kDiscrete,  // ODE's semi-implicit Euler, the parabola with velocity V + g dt/2.
 };
 
 }  // namespace fragsim

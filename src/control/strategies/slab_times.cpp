@@ -10,9 +10,9 @@
 namespace fragsim {
 namespace {
 
-// first_root.cpp's sample<2> and near_zero in lanes: p(x) by Horner's rule and the size of its
-// terms, in the same operations. `finite` is clear in a lane where the size or p' overflowed:
-// list_real_roots then samples the reversed polynomial instead.
+// first_root.cpp's sample<2> and near_zero in lanes, p(x) by Horner's rule and the size of its
+// terms, in the same operations. `finite` is clear in a lane where the size or p' overflowed, where
+// list_real_roots samples the reversed polynomial instead.
 template <class O>
 struct SampleOf {
   typename O::V p;
@@ -37,11 +37,11 @@ template <class O, class V = typename O::V>
 }
 
 // Each lane's roots in [lo, hi] of c0 + c1 t + c2 t^2, as list_real_roots lists them, where they
-// come from its common branches: a linear lane's one root, or a quadratic lane's crossings, one
-// per piece between its break points (lo, the vertex where strictly inside, hi) whose ends have
+// come from its common branches, a linear lane's one root, or a quadratic lane's crossings, one per
+// piece between its break points (lo, the vertex where strictly inside, hi) whose ends have
 // strictly opposite signs, each the closed form's r1 or r2, whichever lies in the piece
 // (real_roots_of<2>, quadratic_root_between). `slow` marks the lanes that need list_real_roots
-// itself: a sample that overflowed, a break point within rounding of zero (a root there), or a
+// itself, for a sample that overflowed, a break point within rounding of zero (a root there), or a
 // crossing the closed form cannot place (the bracketed search decides it).
 template <class O>
 struct LaneRootsOf {
@@ -54,13 +54,13 @@ struct LaneRootsOf {
 template <class O, class V = typename O::V, class M = typename O::M>
 [[gnu::always_inline]] inline LaneRootsOf<O> lane_roots(const V (&q)[3], V lo, V hi) {
   const V zero = O::splat(0.0);
-  // list_real_roots' usable(): an ordered interval and every number finite (x - x is 0 only for
-  // a finite x).
+  // As list_real_roots' usable(), the interval is ordered and every number finite (x - x is 0 only
+  // for a finite x).
   const V finite = (lo - lo) + (hi - hi) + (q[0] - q[0]) + (q[1] - q[1]) + (q[2] - q[2]);
   const M usable = O::le(lo, hi) & O::eq(finite, zero);
   const M quadratic = usable & O::ne(q[2], zero);
   const M linear = usable & O::none_of(O::ne(q[2], zero)) & O::ne(q[1], zero);
-  // Degree 1: -c0 / c1 (real_roots_of<1>). Degree 2: the vertex, the root of the derivative
+  // Degree 1's root is -c0 / c1 (real_roots_of<1>), degree 2's vertex the root of the derivative
   // c1 + 2 c2 t (real_roots_of<1> on it). Lanes of the other degree divide by zero here, unread.
   const V line_root = -q[0] / q[1];
   const M line_in = O::ge(line_root, lo) & O::le(line_root, hi);
@@ -69,7 +69,7 @@ template <class O, class V = typename O::V, class M = typename O::M>
   const SampleOf<O> at_lo = sample<O>(q, lo);
   const SampleOf<O> at_vertex = sample<O>(q, vertex);
   const SampleOf<O> at_hi = sample<O>(q, hi);
-  // quadratic_root_between's closed form: the same numbers for either piece of a lane.
+  // quadratic_root_between's closed form gives the same numbers for either piece of a lane.
   const V disc = q[1] * q[1] - 4.0 * q[2] * q[0];
   const V h = -0.5 * (q[1] + O::copysign(O::sqrt(disc), q[1]));
   const M closed = O::eq(disc - disc, zero) & O::ge(disc, zero) & O::ne(h, zero);
@@ -118,9 +118,9 @@ RootList lane_root_list(const LaneRootsOf<NarrowOps>& r, int k, const NarrowOps:
   return list;
 }
 
-// The rest of the definition, given both bounds' roots: t0, t1 and the roots sorted by insertion
-// (at most six points), then each piece between consecutive points kept where its midpoint is
-// inside, joined to the one before where they touch.
+// The rest of the definition, given both bounds' roots. t0, t1 and the roots are sorted by
+// insertion (at most six points), then each piece between consecutive points is kept where its
+// midpoint is inside, joined to the one before where they touch.
 [[gnu::always_inline]] inline Intervals pieces_inside(const AxisQuadratic& c,
                                                       const AxisQuadratic& lo,
                                                       const AxisQuadratic& hi, double t0, double t1,
@@ -168,10 +168,10 @@ RootList lane_root_list(const LaneRootsOf<NarrowOps>& r, int k, const NarrowOps:
   return _mm256_movemask_pd(reinterpret_cast<__m256d>(m.bits));
 }
 
-// Two slabs' bounds' roots in four lanes: a's lower and upper bound, then b's. The upper halves
-// of the vector registers are cleared before returning to code compiled without AVX (GCC 12 did
-// not clear them here, and the SSE code after it ran 2.5 times slower on the benchmark machine,
-// docs/benchmarks.md's fourth round).
+// Two slabs' bounds' roots in four lanes, a's lower and upper bound, then b's. The upper halves of
+// the vector registers are cleared before returning to code compiled without AVX, as GCC 12 does
+// not clear them here and the SSE code after it runs 2.5 times slower on the benchmark machine
+// (docs/benchmarks.md's fourth round).
 [[gnu::target("avx2")]] void bound_roots_wide(const Slab& a, const Slab& b, double t0, double t1,
                                               RootList (&out)[4]) {
   using O = WideOps;

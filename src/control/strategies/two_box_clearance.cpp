@@ -27,24 +27,25 @@ using rejection::BoxAccelOf;
 using rejection::broadcast3;
 using rejection::dot;
 
-// An upper bound, without a division or a square root, on the interval edge-min's solve gives
-// a path (two_box_clearance.hpp): max(min(g, cap), floor), g = EdgeMinStrategy::time_to_ground_s,
-// the later root of c + b t + a t^2 (c = y - ground, b = v_y, a = half_gy < 0) going down, or 0
-// or +inf. For a < 0 that function computes disc = b b - 4 a c, s = sqrt(disc), q = -(b +
-// sign(b) s) / 2 and returns max(q / a, c / q) when it is positive and the path goes down there.
-// - c <= 0 and (b <= 0 or disc < 0): it returns 0 (q >= 0 makes both quotients <= 0; or no real
-//   root), so the interval is the floor.
-// - otherwise it returns 0 or the later root, which is (b + s) / (2 |a|) up to a few roundings,
-//   whichever quotient computes it (for b < 0 it is c / q = 2 c / (|b| + s), the same number up
-//   to rounding, cancellation included: the difference is ~eps |b| / |a|). With S >= s (1 +
-//   1e-9), (b + S) / (2 |a|) (1 + 1e-9) exceeds it by ~1e-9 (|b| + s) / |a|, far more than those
-//   roundings (~1e-16 of the same). S: sqrt(x) <= (x / u + u) / 2 for every u > 0 (the
-//   arithmetic and geometric means), least over u = 1/4, 1, 4 m/s (x / u exact): within 25% of
-//   sqrt(x) for x in [1/16, 64] (m/s)^2, the scale of a falling fragment; below, S >= 1/8 m/s
-//   still gives less than a step at g = 9.81 (the floor: a fragment sliding on the ground).
-// - it returns +inf where c > 0 only when the numbers under- or overflow (a later root <= 0 or
-//   not going down cannot happen otherwise: s > |b| there). Those, c or disc beyond 1e-200 ..
-//   1e200, |b| beyond 1e100, and any non-finite number, get the cap.
+// An upper bound, without a division or a square root, on the interval edge-min's solve gives a
+// path (two_box_clearance.hpp), max(min(g, cap), floor) for g = EdgeMinStrategy::time_to_ground_s,
+// the later root of c + b t + a t^2 (c = y - ground, b = v_y, a = half_gy < 0) going down, or 0 or
+// +inf. For a < 0 that function computes disc = b b - 4 a c, s = sqrt(disc),
+// q = -(b + sign(b) s) / 2 and returns max(q / a, c / q) when it is positive and the path goes
+// down there.
+// - If c <= 0 and (b <= 0 or disc < 0) it returns 0 (q >= 0 makes both quotients <= 0, or no root
+//   is real), so the interval is the floor.
+// - Otherwise it returns 0 or the later root, which is (b + s) / (2 |a|) up to a few roundings,
+//   whichever quotient computes it (for b < 0 it is c / q = 2 c / (|b| + s), the same number up to
+//   rounding, cancellation included, as the difference is ~eps |b| / |a|). With S >= s (1 + 1e-9),
+//   (b + S) / (2 |a|) (1 + 1e-9) exceeds it by ~1e-9 (|b| + s) / |a|, far more than those roundings
+//   (~1e-16 of the same). S is the least of (x / u + u) / 2 over u = 1/4, 1, 4 m/s (x / u exact),
+//   at least sqrt(x) for every u > 0 (the arithmetic and geometric means) and within 25% of sqrt(x)
+//   for x in [1/16, 64] (m/s)^2, the scale of a falling fragment; below, S >= 1/8 m/s still gives
+//   less than a step at g = 9.81 (the floor, a fragment sliding on the ground).
+// - If c > 0 it returns +inf only when the numbers under- or overflow (otherwise s > |b| there, so
+//   a later root <= 0 or not going down cannot happen). Those, c or disc beyond 1e-200 .. 1e200,
+//   |b| beyond 1e100, and any non-finite number, get the cap.
 // For a >= 0 (no gravity down) every path gets max(cap, floor).
 struct HorizonBound {
   bool down = false;  // a < 0
@@ -76,7 +77,7 @@ template <class O>
   const V a = O::splat(h.a);
   const V b = vy;
   const V c = y0 - ground;
-  const V disc = b * b - 4.0 * a * c;  // as time_to_ground_s: the same number
+  const V disc = b * b - 4.0 * a * c;  // the same number as time_to_ground_s's
   V s = 0.5 * (disc * 4.0 + 0.25);
   for (const double u : {1.0, 4.0}) s = O::min(s, 0.5 * (disc * (1.0 / u) + u));
   const V root = (b + s * (1.0 + 1e-9)) * O::splat(h.inv_2a);
@@ -91,14 +92,14 @@ template <class O>
   return O::max(O::min(t, cap), floor);
 }
 
-// The first tier's test for one box. A box lo <= x <= hi in the frame's axes, grown by a
-// fragment's radius r on every axis (as the exact solves grow it), lies within R + sqrt(3) r of
-// the origin, R the distance to its farthest corner. Frame coordinates are x(t) = A (rel + rv t)
-// + a t^2 (A: the axes as rows; rel, rv: world position and velocity relative to the frame), so
+// The first tier's test for one box. A box lo <= x <= hi in the frame's axes, grown by a fragment's
+// radius r on every axis (as the exact solves grow it), lies within R + sqrt(3) r of the origin, R
+// the distance to its farthest corner. Frame coordinates are x(t) = A (rel + rv t) + a t^2 (A the
+// axes as rows, rel and rv world position and velocity relative to the frame), so
 // |x(t)| >= sigma |rel + rv t| - |a| t^2 >= sigma (|rel| - |rv| t) - |a| t^2, sigma A's smallest
 // singular value. Over [0, T] the path therefore stays beyond R + sqrt(3) r when
 //   |rel| > m = k (R + sqrt(3) r + |a| T^2) + |rv|_1 T,   k >= 1 / sigma, |rv|_1 >= |rv|.
-// Tested as (1 - 1e-6) |rel|^2 > m^2: the path then stays at least 5e-7 |rel| (and 5e-7 m)
+// It is tested as (1 - 1e-6) |rel|^2 > m^2, so the path stays at least 5e-7 |rel| (and 5e-7 m)
 // outside that ball, beyond the solves' rounding (~1e-15 of the coordinates' size) by far, and
 // beyond this test's own (a few ulps of |rel|^2 and m). Non-finite numbers never pass.
 struct FarBound {
@@ -108,7 +109,7 @@ struct FarBound {
 };
 constexpr double kFarShrink = 1.0 - 1e-6;
 
-// 1 / sigma bounded from above: A A^T's eigenvalues are sigma_i^2, and by Weyl's inequality they
+// 1 / sigma bounded from above. A A^T's eigenvalues are sigma_i^2, and by Weyl's inequality they
 // are within ||A A^T - I||_F of 1. +infinity (the first tier clears nothing) for axes far from
 // orthonormal.
 double inverse_sigma_bound(const Eigen::Vector3d (&axes)[3]) {
@@ -183,9 +184,9 @@ template <class O, class Index>
   return g;
 }
 
-// The first tier's answer for W fragments: bit k set when fragment k certainly clears the box
-// (bit 0 of the pair) and the grown box (bit 1), and the interval used; and the positions
-// relative to the frame's origin, which the second tier starts from.
+// The first tier's answer for W fragments, with bit k set when fragment k certainly clears the box
+// (bit 0 of the pair) and the grown box (bit 1), the interval used, and the positions relative to
+// the frame's origin, which the second tier starts from.
 template <class O>
 struct Far {
   typename O::M box;
@@ -219,7 +220,7 @@ template <class O>
   return out;
 }
 
-// The first tier over fragments [0, n) of f: lists, without a branch, those not certainly clear
+// The first tier over fragments [0, n) of f. It lists, without a branch, those not certainly clear
 // of both boxes (as base + their index), and returns how many; the largest radius goes to r_max.
 // The last group repeats the last fragment in its spare lanes.
 template <class O>
@@ -273,8 +274,8 @@ struct SecondTierOf {
   V hi[3];
   V glo[3];
   V ghi[3];
-  // The grown box's window in pieces (TwoBoxClearance::Boxes::pieces): each piece's start and
-  // end, and its box.
+  // The grown box's window in pieces (TwoBoxClearance::Boxes::pieces), each piece's start and end,
+  // and its box.
   int pieces;
   V piece_t0[TwoBoxClearance::Boxes::kMaxPieces];
   V piece_t1[TwoBoxClearance::Boxes::kMaxPieces];
@@ -284,9 +285,9 @@ struct SecondTierOf {
 };
 using SecondTier = SecondTierOf<NarrowOps>;
 
-// What the second tier takes for a lane's worth of fragments: their positions relative to the
+// What the second tier takes for a lane's worth of fragments, their positions relative to the
 // frame's origin (the first tier's numbers), world velocities and radii, and the first tier's
-// answer: each one's interval and which boxes it cleared (a bit each).
+// answer, each one's interval and which boxes it cleared (a bit each).
 template <class O>
 struct Doubts {
   typename O::V rel[3];
@@ -312,7 +313,7 @@ struct Verdict {
   int grown;
 };
 
-// Where the second tier writes its answers. Raw pointers: a store through a char may alias
+// Where the second tier writes its answers. Raw pointers, as a store through a char may alias
 // anything, the vectors' own pointers included.
 struct Answers {
   char* clears;
@@ -321,12 +322,12 @@ struct Answers {
   std::size_t unsettled_count;
 };
 
-// The grown box piece by piece, for paths whose whole window left it in doubt (d, w: their
-// coordinates and velocities in the grown box's frame; tg: each one's window): set where every
-// piece's box is missed over the piece's part of [0, tg]. Each piece's test starts at its own
-// start time, so the path is moved there first (rounding far inside the box test's margin). The
-// lanes in `settled` are answered too but not wanted: the pieces stop once every other lane has
-// failed one, and a piece that is past for all the others is not tested.
+// The grown box piece by piece, for paths whose whole window left it in doubt (d, w their
+// coordinates and velocities in the grown box's frame, tg each one's window), set where every
+// piece's box is missed over the piece's part of [0, tg]. Each piece's test starts at its own start
+// time, so the path is moved there first (rounding far inside the box test's margin). The lanes in
+// `settled` are answered too but not wanted, so the pieces stop once every other lane has failed
+// one, and a piece that is past for all the others is not tested.
 template <class O>
 [[gnu::always_inline]] inline typename O::M grown_by_pieces(const SecondTierOf<O>& q,
                                                             const typename O::V (&d)[3],
@@ -341,7 +342,7 @@ template <class O>
   for (int j = 0; j < q.pieces; ++j) {
     const V t0 = q.piece_t0[j];
     const V t1 = O::min(tg, q.piece_t1[j]);
-    // The path's window ends before this piece (strictly: a window ending at a piece's start
+    // The path's window ends before this piece (strictly, as a window ending at a piece's start
     // still has that instant to test, and a window of 0 s its one instant in the first piece).
     const typename O::M past = O::lt(t1, t0);
     const int skip = (~open | O::bits(past)) & all;
@@ -363,7 +364,7 @@ template <class O>
   return clear;
 }
 
-// A lane's worth of paths in the grown box's frame for its pieces: coordinates, velocities,
+// A lane's worth of paths in the grown box's frame for its pieces, with coordinates, velocities,
 // radii and windows.
 template <class O>
 struct GrownPaths {
@@ -373,11 +374,11 @@ struct GrownPaths {
   typename O::V tg;
 };
 
-// The second tier for a lane's worth of fragments, all but the grown box's pieces: the box tests
-// in the frame's axes, each over the fragment's interval (the first tier's bound on it) and, for
-// the grown box, the window within it, for the lanes the first tier left in doubt of each. Each
-// lane's answer is its own, whatever its neighbours. Where the grown box is left in doubt,
-// `grown` gets the paths for the pieces.
+// The second tier for a lane's worth of fragments, all but the grown box's pieces. It runs the box
+// tests in the frame's axes, each over the fragment's interval (the first tier's bound on it) and,
+// for the grown box, the window within it, for the lanes the first tier left in doubt of each. Each
+// lane's answer is its own, whatever its neighbours. Where the grown box is left in doubt, `grown`
+// gets the paths for the pieces.
 template <class O>
 [[gnu::always_inline]] inline Verdict second_tier_whole(const SecondTierOf<O>& q,
                                                         const Doubts<O>& in, GrownPaths<O>& grown) {
@@ -488,15 +489,15 @@ void second_tier_over(const FragmentState* f, const FirstTier& p, LazySecondTier
   }
 }
 
-// The rows of four the wide pass keeps of a group in doubt (TwoBoxClearance::WorkSpace::kept): the
+// The rows of four the wide pass keeps of a group in doubt (TwoBoxClearance::WorkSpace::kept), the
 // positions relative to the origin, the velocities, the radii and the intervals.
 constexpr std::size_t kKeptRows = 8;
 
-// The lanes the grown box's pieces are left to test, packed: the pieces are the costliest stage,
-// and most groups that reach them do so for one or two lanes; packed, they run over full groups
-// of four, each lane with the same numbers as in its own group. Lane l of row r at
-// rows[r * stride + l], the rows GrownPaths' numbers in order, and the lane's group and place in
-// it (4 group + lane) at group_lane[l].
+// The lanes the grown box's pieces are left to test, packed, as the pieces are the costliest stage
+// and most groups that reach them do so for one or two lanes. Packed, they run over full groups of
+// four, each lane with the same numbers as in its own group. Lane l of row r is at
+// rows[r * stride + l] (the rows GrownPaths' numbers in order), its group and place in it
+// (4 group + lane) at group_lane[l].
 constexpr std::size_t kPieceRows = 8;
 struct PieceLanes {
   double* rows;
@@ -505,7 +506,7 @@ struct PieceLanes {
   std::size_t count;
 };
 
-// The wide pass's work arrays for n fragments: kept rows for n / 4 groups, and 3 doubles to align
+// The wide pass's work arrays for n fragments, kept rows for n / 4 groups plus 3 doubles to align
 // them on 32 bytes (a row of four in one cache line); a packed row has room for every lane of the
 // groups and the spare lanes of its last store of four.
 constexpr std::size_t kept_doubles(std::size_t n) {
@@ -517,8 +518,8 @@ constexpr std::size_t piece_stride(std::size_t n) {
 
 #if defined(FRAGSIM_WIDE_LANES)
 // Four fragments' states when each one's position and velocity are six consecutive doubles
-// (`packed`): one load of four and one of two per fragment, transposed, instead of a load per
-// number.
+// (`packed`), read by one load of four and one of two per fragment, transposed, instead of a load
+// per number.
 [[gnu::target("avx2"), gnu::always_inline]] inline Gathered<WideOps> gather_packed(
     const FragmentState* f) {
   const double* q[4] = {f[0].position_m.data(), f[1].position_m.data(), f[2].position_m.data(),
@@ -596,11 +597,11 @@ template <int N>
 }
 
 // What the first loop keeps of a group for the second, kKeptRows rows of four, in two parts. The
-// rows the first tier's test no longer needs once it has begun (x and z of the positions
-// relative to the origin and of the velocities) are stored before the test, whether the group
-// turns out in doubt or not: held until that is known, they would be live across the test and
-// spilled (the flight's rejection about 4% slower so). The rest, live to the end anyway, only for
-// a group in doubt, by keep_late.
+// rows the first tier's test does not need once it has begun (x and z of the positions relative to
+// the origin and of the velocities) are stored before the test, whether the group turns out in
+// doubt or not, as held until that is known they would be live across the test and spilled (the
+// flight's rejection about 4% slower). The rest, live to the end anyway, are stored only for a
+// group in doubt, by keep_late.
 [[gnu::target("avx2"), gnu::always_inline]] inline void keep_early(const FirstTier& p,
                                                                    const Gathered<WideOps>& g,
                                                                    double* kept) {
@@ -632,10 +633,10 @@ template <int N>
   return in;
 }
 
-// A group's answers written whole: the lanes the first tier settled have both flags set, as
-// they were, and no unsettled entry. Per pattern of bits, each lane's flag as a byte (clears_ and
-// grown_clears_ are runs of chars), which lanes are set, in order (to list them), and the
-// permutation of 32-bit halves that moves those lanes of four doubles to the front, in order.
+// A group's answers, written whole. The lanes the first tier settled have both flags set, as they
+// were, and no unsettled entry. Per pattern of bits the tables hold each lane's flag as a byte
+// (clears_ and grown_clears_ are runs of chars), which lanes are set, in order (to list them), and
+// the permutation of 32-bit halves that moves those lanes of four doubles to the front, in order.
 struct GroupTables {
   alignas(32) std::int32_t to_front[16][8];
   std::int32_t set[16][4];
@@ -674,13 +675,13 @@ constexpr GroupTables kGroupTables = group_tables();
                                                                    Answers& out) {
   std::memcpy(out.clears + start, &kGroupTables.bytes[s.box], 4);
   std::memcpy(out.grown_clears + start, &kGroupTables.bytes[s.grown], 4);
-  // Room for four entries: at most `start` are listed before this group, which ends within the
+  // Room for four entries, as at most `start` are listed before this group, which ends within the
   // fragments.
   out.unsettled_count += list_lanes(~(s.box & s.grown) & 15, static_cast<std::int32_t>(start),
                                     out.unsettled + out.unsettled_count);
 }
 
-// Appends the lanes of `g` in `lanes` (a bit each) of group `group`: each row moved to the front
+// Appends the lanes of `g` in `lanes` (a bit each) of group `group`. Each row is moved to the front
 // by one permutation and stored whole (four doubles), the spare lanes overwritten by the next
 // group's or never read. stride >= the lanes appended + 3.
 [[gnu::target("avx2"), gnu::always_inline]] inline void put_front(double* at, const Wide& x,
@@ -729,10 +730,10 @@ constexpr GroupTables kGroupTables = group_tables();
 }
 
 // The first loop over the whole groups of four (the mask's bits by AVX's own instruction, which
-// only code compiled for AVX may use): lists the groups with a fragment in doubt in `groups` and
-// returns how many; the largest radius goes to r_max, the count of doubts to `doubts`. kKeep: with
-// what the second loop needs of each group (`kept`, kKeptRows rows of four, and its bits in
-// `verdicts`), for flying debris, nearly all in doubt; else nothing more, the loop as lean as
+// only code compiled for AVX may use). It lists the groups with a fragment in doubt in `groups` and
+// returns how many; the largest radius goes to r_max, the count of doubts to `doubts`. With kKeep
+// it also keeps what the second loop needs of each group (`kept`, kKeptRows rows of four, and its
+// bits in `verdicts`), for flying debris, nearly all in doubt; without, the loop is as lean as
 // settled debris (none in doubt) wants it, and the second loop gathers and tests its few groups
 // again (the same numbers). `kept` is restrict, or its stores could alias `p` and the loop would
 // load p's numbers for each group.
@@ -774,8 +775,8 @@ template <bool kKeep>
   return open_groups;
 }
 
-// Out of line: inlined beside first_loop<false> and the second loop, its registers came out worse
-// (about 5% more instructions over the flight); first_loop<false> inlined is the loop as it was.
+// Out of line, as inlined beside first_loop<false> and the second loop its registers come out worse
+// (about 5% more instructions over the flight); first_loop<false> stays inlined.
 [[gnu::target("avx2"), gnu::noinline]] std::size_t keeping_first_loop(
     const FragmentState* f, std::size_t n, const FirstTier& p, bool packed, std::int32_t* groups,
     std::int32_t* verdicts, double* __restrict kept, Wide& r_max, std::size_t& doubts) {
@@ -799,14 +800,14 @@ template <bool kKeep>
 }
 
 // The whole groups of four through first_loop, then those with a fragment in doubt through the
-// second tier four lanes at once. Two loops, so that the first, which settled debris runs
-// through with nothing in doubt, stays small, its constants in registers. The second leaves the
-// grown box's pieces to the lanes it packs (`pieces`), and the answers are written once those
-// are done. *keep says whether the first loop keeps what the second needs, and is set for the
-// next run: whether this one left more than a few groups in doubt (a guess at the next; it
-// changes how fast a run is, never what it answers). The rest two at a time through the first
-// tier, their doubts listed in `doubt` for second_tier_over; the count of those is returned,
-// every doubt's in *doubts. `groups`, `verdicts` and `kept` have room for n / 4 groups.
+// second tier four lanes at once. Two loops, so that the first, which settled debris runs through
+// with nothing in doubt, stays small, its constants in registers. The second leaves the grown box's
+// pieces to the lanes it packs (`pieces`), and the answers are written once those are done. *keep
+// says whether the first loop keeps what the second needs, and is set for the next run to whether
+// this one left more than a few groups in doubt (a guess at the next, which changes how fast a run
+// is, never what it answers). The rest go two at a time through the first tier, their doubts listed
+// in `doubt` for second_tier_over; the count of those is returned, every doubt's in *doubts.
+// `groups`, `verdicts` and `kept` have room for n / 4 groups.
 [[gnu::target("avx2")]] std::size_t both_tiers_wide(
     const FragmentState* f, std::size_t n, const FirstTier& p, bool packed, LazySecondTier& q,
     Answers& out, std::int32_t* groups, std::int32_t* verdicts, double* kept, PieceLanes pieces,
@@ -833,7 +834,7 @@ template <bool kKeep>
       verdicts[k] = s.box | s.grown << 4;
     }
     pieces_over(wq, pieces, verdicts);
-    // A copy the stores through char cannot alias: its pointers stay in registers.
+    // A copy the stores through char cannot alias, so its pointers stay in registers.
     Answers to = out;
     for (std::size_t k = 0; k < open_groups; ++k) {
       const Verdict s{verdicts[k] & 15, verdicts[k] >> 4};
@@ -853,7 +854,7 @@ template <bool kKeep>
   return tail_doubts;
 }
 #endif
-// -Wpsabi stays off to the end of the file: the templates above are instantiated there.
+// -Wpsabi stays off to the end of the file, as the templates above are instantiated there.
 
 }  // namespace
 
@@ -879,7 +880,7 @@ void TwoBoxClearance::use_wide_lanes(bool wide) {
 #endif
 }
 
-// Only ever grown: nothing in them carries over from one pass to the next, and a resize in each
+// Only ever grown, as nothing in them carries over from one pass to the next, and a resize in each
 // pass would write them whole on the first after reserve().
 void TwoBoxClearance::WorkSpace::size_for(std::size_t n) {
   const auto at_least = [](auto& v, std::size_t size) {
@@ -904,7 +905,7 @@ void TwoBoxClearance::reserve(std::size_t n) {
   reserve_touched(grown_clears_, n);
   whole_.reserve(n);
   reserve_touched(unsettled_, n);
-  // Kept at its largest size, as the flags are: reserve() runs before every controller step.
+  // Kept at its largest size like the flags, as reserve() runs before every controller step.
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   if (chunks_.size() < chunks) chunks_.resize(chunks);
 }
@@ -913,12 +914,12 @@ void TwoBoxClearance::set_workers(int workers) {
   const auto wanted = static_cast<std::size_t>(std::max(workers, 1));
   workers_.reserve(wanted);
   while (workers_.size() < wanted) {
-    // Made whole before it joins: an allocation that fails half way must not leave a work space
+    // Made whole before it joins, as an allocation that fails half way must not leave a work space
     // without its unsettled list for the next run to write through.
     WorkSpace w(mem_);
     w.reserve(static_cast<std::size_t>(kChunk));
     w.unsettled.resize(static_cast<std::size_t>(kChunk));
-    workers_.push_back(std::move(w));  // within the reserve: no allocation, no throw
+    workers_.push_back(std::move(w));  // within the reserve, so no allocation and no throw
   }
 }
 
@@ -946,16 +947,15 @@ FirstTier first_tier_constants(const TwoBoxClearance::Boxes& boxes) {
   return p;
 }
 
-// Both tiers over fragments [0, n) of f (n > 0), in work space w: the first tier over every
-// fragment, the second over those it leaves in doubt. The second tier tests the box in the
-// frame's axes, each over the fragment's interval (the first tier's bound on it) and, for the
-// grown box, the window within it. The flags and the unsettled list go to `out`, indices from f;
-// the largest radius to r_max, the first tier's count of doubts to `doubts`.
+// Both tiers over fragments [0, n) of f (n > 0), in work space w, the first tier over every
+// fragment and the second (second_tier_whole, then the pieces) over those it leaves in doubt. The
+// flags and the unsettled list go to `out`, indices from f; the largest radius to r_max, the first
+// tier's count of doubts to `doubts`.
 void both_tiers(const FragmentState* f, std::size_t n, const FirstTier& p,
                 const TwoBoxClearance::Boxes& boxes, [[maybe_unused]] bool wide,
                 TwoBoxClearance::WorkSpace& w, Answers& out, double* r_max, std::size_t* doubts) {
-  // The second tier's constants, built at its first fragment: most steps, once the debris has
-  // settled, the first tier leaves none.
+  // The second tier's constants, built at its first fragment, since in most steps, once the debris
+  // has settled, the first tier leaves none.
   LazySecondTier q{&boxes, {}};
   std::int32_t* const doubt = w.doubt.data();
   std::size_t listed = 0;  // doubts listed in `doubt` for second_tier_over
@@ -1007,12 +1007,12 @@ void TwoBoxClearance::join_chunks(std::size_t chunks) {
   for (std::size_t c = 0; c < chunks; ++c) {
     const ChunkResult& result = chunks_[c];
     const auto from = unsettled_.begin() + static_cast<std::ptrdiff_t>(c * kChunk);
-    // Moved toward the front (never past its own start): std::copy's overlap is allowed so.
+    // Moved toward the front (never past its own start), an overlap std::copy allows.
     std::copy(from, from + static_cast<std::ptrdiff_t>(result.unsettled),
               unsettled_.begin() + static_cast<std::ptrdiff_t>(unsettled_count_));
     unsettled_count_ += result.unsettled;
     doubts_ += result.doubts;
-    // The largest of the chunks' largest: the run's (max is exact, whatever the order).
+    // The largest of the chunks' largest is the run's (max is exact, whatever the order).
     max_radius_m_ = std::max(max_radius_m_, result.max_radius_m);
   }
 }
@@ -1026,8 +1026,8 @@ void TwoBoxClearance::run(std::span<const FragmentState> fragments, const Boxes&
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   if (chunks_.size() < chunks) chunks_.resize(chunks);  // done by reserve(n) before
   const FirstTier p = first_tier_constants(boxes);
-  // Chunk c on a worker: its flags in place, its unsettled fragments to its own slice of the
-  // run's list (as indices over all the fragments), the rest to its own ChunkResult.
+  // Chunk c on a worker writes its flags in place, its unsettled fragments to its own slice of the
+  // run's list (as indices over all the fragments), and the rest to its own ChunkResult.
   const auto run_chunks = [&](std::int32_t first, std::int32_t end, std::uint32_t worker) {
     WorkSpace& w = workers_[worker];
     for (auto c = static_cast<std::size_t>(first); c < static_cast<std::size_t>(end); ++c) {
