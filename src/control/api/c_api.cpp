@@ -1,5 +1,5 @@
-// The C API of fragsim/control.h: ids resolved to controllers (controller_slots), arguments
-// checked, and nothing thrown across the C boundary. The work is Controller's (controller.hpp).
+// The C API of fragsim/control.h. It resolves ids to controllers (controller_slots), checks
+// arguments, and throws nothing across the C boundary. The work is Controller's (controller.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -50,7 +50,7 @@ void copy_message(const char* text, char* message, std::size_t size) {
   message[n] = '\0';
 }
 
-// The step behind both entry points: nothing escapes the C boundary, and a failed step leaves
+// The step behind both entry points lets nothing escape the C boundary, and a failed step leaves
 // zero forces. An allocation that fails comes from the step's first phase, which changed nothing.
 template <typename Source, typename Sink>
 fragsim_status guarded_step(Controller& controller, const fragsim_step_input& input,
@@ -113,8 +113,8 @@ FRAGSIM_API const char* fragsim_status_string(fragsim_status status) {
 }
 
 FRAGSIM_API fragsim_controller_def fragsim_default_controller_def(void) {
-  // The defaults are the parameter structs' (strategies/*_params.hpp), which fragsim's scenes
-  // use too: read from them, they cannot drift.
+  // The defaults are the parameter structs' (strategies/*_params.hpp), which fragsim's scenes use
+  // too, so read from there they cannot drift.
   return fragsim::control::controller_def(FRAGSIM_STRATEGY_EDGE_MIN, {}, {}, {});
 }
 
@@ -125,8 +125,8 @@ FRAGSIM_API fragsim_step_input fragsim_default_step_input(void) {
   in.end_time_s = std::numeric_limits<double>::infinity();
   in.dt_s = 1.0 / 60.0;
   in.gravity_mps2 = {0.0, -9.81, 0.0};
-  // No ground until the game says where it is: paths are then examined to horizon_cap_s, which
-  // pushes no less than a known ground would.
+  // No ground until the game says where it is, so paths are examined to horizon_cap_s, which pushes
+  // no less than a known ground would.
   in.ground_height_m = -std::numeric_limits<double>::infinity();
   in.ground_normal = {0.0, 1.0, 0.0};
   in.camera_poses = nullptr;
@@ -319,8 +319,8 @@ FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id 
                                                           int32_t fragment_count,
                                                           fragsim_step_stats* stats) {
   if (stats != nullptr) *stats = {};
-  // Zeros go to the force buffer only where its size is known: a valid count, scalar_type and
-  // (count > 1) force stride.
+  // Zeros go to the force buffer only where its size is known (a valid count, scalar_type and, if
+  // count > 1, force stride).
   const bool count_ok =
       fragment_count >= 0 && fragment_count <= kMaxFragments &&
       (arrays == nullptr ||

@@ -99,7 +99,7 @@ Controller::Controller(const fragsim_controller_def& def) : hook_(def), def_(def
 }
 
 void Controller::set_cameras(const fragsim_camera_def* cameras, int count) {
-  // Everything that can fail first: the new cameras' strategies and the probe.
+  // What can fail goes first (new cameras' strategies, the probe), so failing changes nothing.
   if (count > 1 && raw(def_.strategy) == FRAGSIM_STRATEGY_EDGE_MIN) {
     joint_.make_probe(edge_min_params(def_));
   }
@@ -123,7 +123,7 @@ void Controller::reset() {
 
 void Controller::reserve(std::size_t n) {
   reserve_work(n);
-  // Both tables: the explosion's step fills one while the other holds the last step's ids.
+  // Both tables, as the explosion's step fills one while the other holds the last step's ids.
   ids_[0].reserve(n);
   ids_[1].reserve(n);
 }
@@ -158,7 +158,7 @@ void Controller::warn_once(std::uint32_t warnings, const fragsim_camera_def& c,
   (void)c;
   (void)p;
 #else
-  // Debug builds only: a message a developer sees at once, once per kind and controller.
+  // In debug builds only, a message a developer sees at once, once per kind and controller.
   if (fresh & FRAGSIM_WARNING_CAMERA_OVER_SPEED) {
     std::fprintf(stderr,
                  "fragsim_control: warning: the camera moves faster than its max_speed_mps = %g "
@@ -195,7 +195,7 @@ StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_
   ctx.step = 0;
   ctx.t_s = in.time_s;
   ctx.dt_s = in.dt_s;
-  // A game has no scene end: the look-ahead comes from the physics, capped by the def's
+  // A game has no scene end, so the look-ahead comes from the physics, capped by the def's
   // horizon_cap_s (in the strategies' parameters) and by the caller's end when one is given.
   ctx.end_time_s = in.end_time_s;
   ctx.camera.eye_m = frame.in(vec(pose.eye_m));
@@ -208,10 +208,10 @@ StepContext Controller::context_for(const fragsim_step_input& in, const fragsim_
   ctx.camera.far_m = c.far_m;
   ctx.camera_velocity_mps = frame.in(vec(pose.velocity_mps));
   ctx.camera_max_speed_mps = c.max_speed_mps;
-  // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound: passed on as it is.
+  // FRAGSIM_UNDECLARED is the strategies' kUndeclaredBound, passed on as it is.
   ctx.camera_max_accel_mps2 = c.max_accel_mps2;
   ctx.camera_max_turn_degps = c.max_turn_degps;
-  ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes: not rotated
+  ctx.camera_body_half_m = vec(c.body_half_m);  // along the camera's own axes, so not rotated
   ctx.gravity_mps2 = frame.in(vec(in.gravity_mps2));
   ctx.ground_height_m = in.ground_height_m;
   ctx.fragments = std::span<const FragmentState>(states_.data(), m);
@@ -227,11 +227,11 @@ void Controller::undo_carry_over(int cameras) {
   }
 }
 
-// One step's numbers, passed from stage to stage: what it found of the fragments and their ids,
-// the cameras' contexts, and what the strategies answered.
+// One step's numbers, passed from stage to stage (what it found of the fragments and their ids, the
+// cameras' contexts, and what the strategies answered).
 struct Controller::StepState {
   int cameras = 0;
-  // The strategies' state is in the last step's frame, and for the last step's cameras: another
+  // The strategies' state is in the last step's frame, and for the last step's cameras, so another
   // normal, or another camera count, starts afresh.
   bool new_frame = false;
   std::size_t m = 0;  // the fragments usable this step
@@ -239,7 +239,7 @@ struct Controller::StepState {
   int first_skipped = -1;
   int below_ground = 0;
   int first_below_ground = -1;
-  // The same ids as the last step, in the same order: no re-index.
+  // The same ids as the last step, in the same order, so no re-index.
   bool same_ids = false;
   int new_ids = 0;
   int dropped_ids = 0;
@@ -256,7 +256,7 @@ fragsim_status Controller::check_input(const fragsim_step_input& in) {
                        "cameras: none set: call fragsim_controller_set_cameras before the first "
                        "step"));
   }
-  // The count before the poses: a wrong count would have the poses read past the caller's array.
+  // The count first, since a wrong count would have the poses read past the caller's array.
   if (in.camera_count != camera_count_) {
     return failed(fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
                        "camera_count = %d: the controller has %d camera(s) set "
@@ -267,8 +267,8 @@ fragsim_status Controller::check_input(const fragsim_step_input& in) {
   return FRAGSIM_OK;
 }
 
-// The counts in locals while the loop runs: stored through this_step, they could alias the stores
-// of the ids, and the compiler would keep them in memory.
+// Counts stay in locals while the loop runs, since through this_step they could alias the stores of
+// the ids and the compiler would keep them in memory.
 template <class Source>
 void Controller::read_fragments(const fragsim_step_input& in, const Source& src, std::size_t n,
                                 const GroundFrame& frame, StepState& this_step) {
@@ -290,8 +290,9 @@ void Controller::read_fragments(const fragsim_step_input& in, const Source& src,
     s.radius_m = f.radius_m;
     s.mass_kg = f.mass_kg;
     s.touched = src.touched(i);
-    // In the strategies' frame y is the height along the ground's normal. Wholly beneath it: an
-    // engine's contacts let a landing body sink a little, never by its whole size.
+    // In the strategies' frame y is the height along the ground's normal. Wholly beneath it is
+    // below ground, as an engine's contacts let a landing body sink a little, never by its whole
+    // size.
     if (s.position_m.y() + s.radius_m < in.ground_height_m && below_ground++ == 0) {
       first_below_ground = static_cast<int>(i);
     }
@@ -308,8 +309,8 @@ void Controller::read_fragments(const fragsim_step_input& in, const Source& src,
 
 fragsim_status Controller::match_ids(StepState& this_step) {
   const std::size_t m = this_step.m;
-  // The same list as the last step (the usual case, an engine passing its array every this_step)
-  // needs neither the duplicate check nor a re-index: that step already passed both.
+  // The same list as the last step (the usual case, an engine passing its array every step) needs
+  // neither the duplicate check nor a re-index, as that step already passed both.
   this_step.same_ids = !this_step.new_frame && last_ids_.size() == m &&
                        std::equal(last_ids_.begin(), last_ids_.end(), ids_now_.begin());
   if (this_step.same_ids) return FRAGSIM_OK;
@@ -327,7 +328,7 @@ fragsim_status Controller::match_ids(StepState& this_step) {
   int new_ids = 0;
   int kept = 0;
   for (std::size_t k = 0; k < m; ++k) {
-    // A new frame: every fragment new, as after a reset (the state kept is in the old frame).
+    // In a new frame every fragment is new, as after a reset (the state kept is in the last frame).
     previous_[k] = this_step.new_frame ? -1 : ids_[last_].find(ids_now_[k]);
     if (previous_[k] < 0) {
       ++new_ids;
@@ -353,7 +354,7 @@ void Controller::carry_over_ids(const StepState& this_step) {
   const std::span<const int> previous(previous_.data(), this_step.m);
   for (int j = 0; j < this_step.cameras; ++j) {
     CameraSlot& slot = slots_[static_cast<std::size_t>(j)];
-    // The occlusion bound's state is kept by place, not id, and cannot be undone anyway: a new
+    // The occlusion bound's state is kept by place, not id, and cannot be undone anyway, so a new
     // frame resets it as reset() would (its failure below forgets everything too).
     if (this_step.new_frame && !undo_safe_) slot.strategy->reset(0);
     if (!this_step.same_ids && slot.edge != nullptr) slot.edge->carry_over(previous);
@@ -414,7 +415,7 @@ fragsim_status Controller::check_answer(const StepState& this_step) {
   for (const AppliedForce& a : out_.forces) {
     if (!a.force_N.allFinite() || a.fragment < 0 ||
         static_cast<std::size_t>(a.fragment) >= this_step.m) {
-      // A bug: the strategy's state is not to be trusted after it, so nothing is kept.
+      // A bug leaves the strategy's state untrustworthy, so nothing is kept.
       reset();
       set_error("internal: a strategy produced a non-finite force or a bad index");
       return FRAGSIM_ERROR_INTERNAL;
@@ -493,7 +494,7 @@ void Controller::write_stats(const StepState& this_step, std::uint32_t warnings,
 template <class Source, class Sink>
 fragsim_status Controller::step(const fragsim_step_input& in, const Source& src, std::size_t n,
                                 const Sink& sink, fragsim_step_stats* stats) {
-  // Phase 1: checks and room. Nothing here changes the controller's state.
+  // Phase 1 checks and makes room; nothing here changes the controller's state.
   if (const fragsim_status status = check_input(in); status != FRAGSIM_OK) return status;
   // The id table this step fills grows below, only if it must (a table grown here for nothing
   // would cost the first call its page faults).
@@ -507,7 +508,7 @@ fragsim_status Controller::step(const fragsim_step_input& in, const Source& src,
   if (const fragsim_status status = match_ids(this_step); status != FRAGSIM_OK) return status;
   make_contexts(in, frame, this_step);
 
-  // Phase 2: the strategies, in the room made above.
+  // Phase 2 runs the strategies in the room made above.
   if (const fragsim_status status = run_strategies(this_step); status != FRAGSIM_OK) return status;
   if (const fragsim_status status = check_answer(this_step); status != FRAGSIM_OK) return status;
   write_forces(frame, n, sink, this_step);

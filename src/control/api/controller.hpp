@@ -1,6 +1,6 @@
 #pragma once
-// One controller of the C API: the strategy it runs (the same compiled classes fragsim runs), the
-// fragments it keeps by id between calls, and the work space of its steps.
+// One controller of the C API, with the strategy it runs (the same compiled classes fragsim runs),
+// the fragments it keeps by id between calls, and the work space of its steps.
 //
 // A step runs in two phases. The first checks the input and makes room (every allocation that
 // depends on the fragment count happens here); it changes no state, so a refusal or a failed
@@ -9,19 +9,19 @@
 // cover_max < 1, allocates as it steps), the re-indexing by id is undone, or, where the strategy
 // had already changed its state, every fragment is forgotten and the message says so.
 //
-// Everything it allocates, itself included, comes from its HookResource: the def's allocator
-// hook, or operator new and delete. The strategies run in the frame of the step's ground normal
+// Everything it allocates, itself included, comes from its HookResource (the def's allocator hook,
+// or operator new and delete). The strategies run in the frame of the step's ground normal
 // (GroundFrame); the state they keep per fragment lives in that frame, so a step with another
 // normal than the last successful one forgets every fragment first.
 //
-// Cameras: one strategy per camera, each with its own state, run as for one camera; with several,
-// their pushes on a fragment are then joined (JointPush in joint_push.hpp), edge-min's by rounds
-// of probes that ask each camera for its least extra push on the pushed path. A step with another
-// camera count than the last successful one forgets every fragment first, like a new normal: the
+// Each camera has its own strategy and state, run as for one camera. With several cameras their
+// pushes on a fragment are then joined (JointPush in joint_push.hpp), edge-min's by rounds of
+// probes that ask each camera for its least extra push on the pushed path. A step with another
+// camera count than the last successful one forgets every fragment first, like a new normal, as the
 // strategies of the cameras added have no state for them.
 //
-// Workers: with the def's task system (TaskSystem) the strategies run their per-fragment work in
-// ranges on the game's workers; the answer is the same for any worker count.
+// With the def's task system (TaskSystem) the strategies run their per-fragment work in ranges on
+// the game's workers; the answer is the same for any worker count.
 
 #include <cstdint>
 #include <memory>
@@ -67,8 +67,8 @@ struct CameraSlot {
 
 class Controller {
  public:
-  // A controller in memory from the def's allocator (a valid def): throws std::bad_alloc, having
-  // freed what it took, when that fails.
+  // A controller in memory from a valid def's allocator; throws std::bad_alloc, having freed what
+  // it took, when that fails.
   static Controller* create(const fragsim_controller_def& def);
   // Destroys it and gives its memory back to the allocator it came from.
   static void destroy(Controller* c) noexcept;
@@ -83,14 +83,14 @@ class Controller {
   // before the first call.
   void set_cameras(const fragsim_camera_def* cameras, int count);
 
-  // One step over n fragments read from `source`, forces written to `sink` (zeros on failure are
-  // the caller's: see guarded_step in c_api.cpp). May throw std::bad_alloc from the first phase.
+  // One step over n fragments read from `source`, forces written to `sink` (on failure the caller
+  // writes zeros, in guarded_step in c_api.cpp). May throw std::bad_alloc from the first phase.
   template <class Source, class Sink>
   fragsim_status step(const fragsim_step_input& in, const Source& source, std::size_t n,
                       const Sink& sink, fragsim_step_stats* stats);
 
   const char* error() const { return error_; }
-  // A fixed buffer: storing a message allocates nothing and cannot fail (a longer one is cut).
+  // A fixed buffer, so storing a message allocates nothing and cannot fail (a longer one is cut).
   void set_error(const char* why) noexcept;
   void clear_error() noexcept { error_[0] = '\0'; }
 
@@ -148,7 +148,7 @@ class Controller {
   void write_stats(const StepState& this_step, std::uint32_t warnings,
                    fragsim_step_stats& stats) const;
 
-  HookResource hook_;  // first: everything below is allocated from it
+  HookResource hook_;  // first, as everything below is allocated from it
   MemoryResource* mem_ = &hook_;
   fragsim_controller_def def_;
   // The game's workers, when the def gives a task system.
@@ -157,7 +157,7 @@ class Controller {
   // slots_[0] always; more from set_cameras (room for FRAGSIM_MAX_CAMERAS made at creation, so
   // the slots never move).
   ResourceVector<CameraSlot> slots_{mem_};
-  int camera_count_ = 0;   // cameras set by set_cameras (0: none yet, and a step is refused)
+  int camera_count_ = 0;   // cameras set by set_cameras (0 if none yet, and a step is refused)
   int last_cameras_ = 1;   // cameras of the last successful step
   JointPush joint_{mem_};  // several cameras' pushes joined
   bool undo_safe_ = true;  // a failure inside the strategy's step changed nothing
@@ -171,11 +171,11 @@ class Controller {
   ResourceVector<std::int32_t> caller_index_{mem_};
   ResourceVector<std::uint64_t> ids_now_{mem_};
   ResourceVector<int> previous_{mem_};  // this step's fragment k was previous_[k] last step, or -1
-  StepOutput out_{mem_};  // the step's answer: slots_[0].out's for one camera, joint_'s for more
+  StepOutput out_{mem_};  // the step's answer (slots_[0].out's for one camera, joint_'s for more)
   std::size_t room_ = 0;  // the fragment count reserve() made room for
 
-  // The state kept between calls: the last successful step's ids, in order, and as a table; the
-  // other table is this step's; and the ground normal the strategies' state is in (none yet: any
+  // The state kept between calls is the last successful step's ids, in order and as a table (the
+  // other table is this step's), and the ground normal the strategies' state is in (if none, any
   // first step is in its frame).
   IdTable ids_[2] = {IdTable(mem_), IdTable(mem_)};
   int last_ = 0;

@@ -25,7 +25,7 @@ struct Slots {
   std::uint32_t free = kNoSlot;
 };
 
-// Never destroyed: a game may destroy its controllers from its own static destructors.
+// Never destroyed, as a game may destroy its controllers from its own static destructors.
 Slots& slots() {
   static Slots* const table = new Slots;
   return *table;
@@ -80,7 +80,7 @@ Controller* remove_controller(fragsim_controller_id id) {
   }
   Controller* c = s->controller.load(std::memory_order_relaxed);
   if (c == nullptr) return nullptr;
-  // A new generation first: from here on the old id finds nothing.
+  // A new generation first, so from here on the stale id finds nothing.
   s->generation.store(id.generation + 1, std::memory_order_release);
   s->controller.store(nullptr, std::memory_order_release);
   s->next_free = t.free;

@@ -1,10 +1,10 @@
 #pragma once
-// The table behind fragsim_controller_id, as Box2D v3's ids: a slot per live controller and a
-// generation per slot, bumped when the controller is destroyed, so an id kept after destroy (or
-// one never created) is refused with a status instead of being followed to freed memory.
+// The table behind fragsim_controller_id, as Box2D v3's ids, with a slot per live controller and a
+// generation per slot, bumped when the controller is destroyed, so an id kept after destroy (or one
+// never created) is refused with a status instead of being followed to freed memory.
 //
 // The library's one global. Creating and destroying take a lock; finding a controller by id takes
-// none: the slots live in chunks that are never moved or freed, and each slot's generation and
+// none, as the slots live in chunks that are never moved or freed, and each slot's generation and
 // pointer are atomics, so a thread stepping its controller never races another thread creating or
 // destroying a different one.
 

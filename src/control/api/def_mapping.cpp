@@ -41,7 +41,7 @@ DeflectAllParams deflect_all_params(const fragsim_controller_def& d) {
 fragsim_controller_def controller_def(fragsim_strategy strategy, const EdgeMinParams& em,
                                       const EdgeParams& e, const DeflectAllParams& da) {
   fragsim_controller_def d;
-  std::memset(&d, 0, sizeof d);  // padding too: a def's bytes are written to a file as they are
+  std::memset(&d, 0, sizeof d);  // padding too, since a def's bytes are written to a file as is
   d.strategy = strategy;
   d.edge_min.margin_m = em.margin_m;
   d.edge_min.a_max_mps2 = em.a_max_mps2;

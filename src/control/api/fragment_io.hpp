@@ -1,9 +1,9 @@
 #pragma once
 // The fragments as the caller gave them (an array of structs, or strided arrays of doubles or
-// floats) and where their forces go: one interface for both entry points of the C API, read and
+// floats) and where their forces go, one interface for both entry points of the C API, read and
 // written by index. Floats are converted at this boundary, both ways, so everything behind it
-// computes in double on one code path: a float widens to double exactly, and a force is rounded
-// to the nearest float once, on the way out.
+// computes in double on one code path. A float widens to double exactly, and a force is rounded to
+// the nearest float once, on the way out.
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -21,7 +21,7 @@ struct FragmentIn {
   double mass_kg;
 };
 
-// The fragments as the caller gave them: an array of structs, or strided arrays.
+// The fragments as the caller gave them, an array of structs or strided arrays.
 struct StructSource {
   const fragsim_fragment* f;
   void read(std::size_t i, FragmentIn& out) const {
@@ -39,7 +39,7 @@ struct StructSource {
   bool touched(std::size_t i) const { return f[i].touched != 0; }
 };
 
-// Element i of a strided array, read or written through memcpy: a stride need not keep the
+// Element i of a strided array, read or written through memcpy, as a stride need not keep the
 // type's alignment (an engine's packed struct).
 inline const unsigned char* element(const void* base, std::size_t stride, std::size_t i) {
   return static_cast<const unsigned char*>(base) + i * stride;

@@ -9,7 +9,7 @@ namespace fragsim::control {
 GroundFrame::GroundFrame(const fragsim_vec3& n) {
   const int zeros = (n.x == 0.0) + (n.y == 0.0) + (n.z == 0.0);
   if (zeros == 2) {
-    // The quarter and half turns that take the axis to +y: about z for +-x, about x for +-z and
+    // The quarter and half turns that take the axis to +y, about z for +-x and about x for +-z and
     // -y (inside = (x, z, -y) for z-up, Blender's and Unreal's convention mapped to y-up).
     if (n.y > 0.0) {
       from_ = {0, 1, 2}, sign_ = {1.0, 1.0, 1.0};
@@ -28,13 +28,13 @@ GroundFrame::GroundFrame(const fragsim_vec3& n) {
   }
   permutation_ = false;
   const Eigen::Vector3d u = Eigen::Vector3d(n.x, n.y, n.z).normalized();
-  // Duff et al. 2017, listing 3: (b1, b2, u) is a right-handed orthonormal basis.
+  // (b1, b2, u) is a right-handed orthonormal basis (Duff et al. 2017, listing 3).
   const double sign = std::copysign(1.0, u.z());
   const double a = -1.0 / (sign + u.z());
   const double b = u.x() * u.y() * a;
   const Eigen::Vector3d b1(1.0 + sign * u.x() * u.x() * a, sign * b, -sign * u.x());
   const Eigen::Vector3d b2(b, sign + u.y() * u.y() * a, -u.y());
-  // Rows (b2, u, b1): right-handed since b1 x b2 = u, and R u = (0, 1, 0).
+  // Rows (b2, u, b1) are right-handed since b1 x b2 = u, and R u = (0, 1, 0).
   row_[0] = b2;
   row_[1] = u;
   row_[2] = b1;

@@ -8,8 +8,8 @@ void IdTable::reserve(std::size_t n) {
   std::size_t capacity = 16;
   while (capacity < 2 * n) capacity *= 2;
   if (capacity <= slots_.size()) return;
-  // Built aside: if the allocation throws, nothing here has changed.
-  IdTable grown(slots_.get_allocator().resource());  // the same resource: the move below steals
+  // Built aside, so a throwing allocation changes nothing here.
+  IdTable grown(slots_.get_allocator().resource());  // same resource, so the move below steals
   grown.slots_.resize(capacity);
   grown.mask_ = capacity - 1;
   for (const Slot& s : slots_) {
@@ -21,7 +21,7 @@ void IdTable::reserve(std::size_t n) {
 void IdTable::clear(std::size_t n) {
   reserve(n);
   size_ = 0;
-  if (++generation_ == 0) {  // wrapped after 2^32 clears: old stamps could look current
+  if (++generation_ == 0) {  // wrapped after 2^32 clears, when old stamps could look current
     for (Slot& s : slots_) s.stamp = 0;
     generation_ = 1;
   }

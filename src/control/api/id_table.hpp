@@ -1,11 +1,11 @@
 #pragma once
-// Fragment ids to indices, for the controller's per-fragment state across calls: an open-address
-// hash table (linear probing, power-of-two capacity, at most half full) that is cleared in O(1)
-// by a generation stamp, so a step does not pay for clearing or allocating once the table has
-// grown to the largest fragment count seen.
+// Fragment ids to indices, for the controller's per-fragment state across calls, in an open-address
+// hash table (linear probing, power-of-two capacity, at most half full) that is cleared in O(1) by
+// a generation stamp, so a step does not pay for clearing or allocating once the table has grown to
+// the largest fragment count seen.
 //
-// Every growth builds the new arrays aside and swaps them in: an allocation that fails leaves the
-// table as it was (the controller's promise after FRAGSIM_ERROR_OUT_OF_MEMORY).
+// Every growth builds the new arrays aside and swaps them in, so an allocation that fails leaves
+// the table as it was (the controller's promise after FRAGSIM_ERROR_OUT_OF_MEMORY).
 
 #include <cstdint>
 #include <vector>
@@ -32,8 +32,8 @@ class IdTable {
 
  private:
   static std::uint64_t hash(std::uint64_t id) {
-    // splitmix64's finaliser: engine ids are often sequential or pointer-like, and linear probing
-    // needs them spread over the whole table.
+    // splitmix64's finaliser, as engine ids are often sequential or pointer-like, and linear
+    // probing needs them spread over the whole table.
     id ^= id >> 30;
     id *= 0xbf58476d1ce4e5b9ULL;
     id ^= id >> 27;
@@ -42,7 +42,7 @@ class IdTable {
     return id;
   }
 
-  // One slot in 16 bytes, key, value and stamp together: a probe touches one cache line, where
+  // One slot in 16 bytes, key, value and stamp together, so a probe touches one cache line where
   // three arrays would touch three (the explosion's step inserts every id at random places).
   struct Slot {
     std::uint64_t key = 0;

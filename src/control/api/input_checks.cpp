@@ -45,7 +45,7 @@ bool nonnegative(double v) {
 bool positive(double v) {
   return std::isfinite(v) && v > 0.0;
 }
-// A declared camera bound: >= 0 (+inf: none), or exactly FRAGSIM_UNDECLARED.
+// A declared camera bound is >= 0 (+inf for none), or exactly FRAGSIM_UNDECLARED.
 bool bound(double v) {
   return (!std::isnan(v) && v >= 0.0) || v == FRAGSIM_UNDECLARED;
 }
@@ -98,7 +98,7 @@ const fragsim::ParamRange* def_range(std::span<const fragsim::ParamRange> ranges
 }
 
 // A def field that is one of the strategies' parameters, checked against that parameter's range
-// (the one a scene file's value must keep: the tool's keys take theirs from the same table) and
+// (the one a scene file's value must keep, as the tool's keys take theirs from the same table) and
 // named by its C field (edge.k_Nms2; one horizon_cap_s for both strategies). The value is printed
 // with 15 digits, which give back any number typed with 15 or fewer (1000001, not 1e+06).
 Failure check_param(std::span<const fragsim::ParamRange> ranges, const char* name, double value) {
@@ -109,7 +109,7 @@ Failure check_param(std::span<const fragsim::ParamRange> ranges, const char* nam
               RangeWords(*r).text);
 }
 
-// edge_min.edge_weights: each weight in its range, and not all four zero.
+// edge_min.edge_weights, each weight in its range and not all four zero.
 Failure check_edge_weights(const std::array<double, 4>& w) {
   const fragsim::ParamRange* r = def_range(fragsim::kEdgeMinRanges, "edge_weights");
   if (r == nullptr) return fail(FRAGSIM_ERROR_INTERNAL, "internal: the def has no edge weights");
@@ -154,7 +154,7 @@ Failure validate_def(const fragsim_controller_def& def) {
                 static_cast<int>(def.worker_count), FRAGSIM_MAX_WORKERS);
   }
   Failure f;
-  // The shared fields first, whichever strategy is chosen: a def is valid as a whole.
+  // The shared fields first, whichever strategy is chosen, as a def is valid as a whole.
   const auto& em_ranges = fragsim::kEdgeMinRanges;
   const fragsim::EdgeMinParams em = edge_min_params(def);
   if ((f = check_param(em_ranges, "max_solves", em.max_solves)) ||
@@ -216,8 +216,8 @@ Failure validate_def(const fragsim_controller_def& def) {
 
 namespace {
 
-// The ground's normal: finite and of unit length within the camera axes' tolerance. A zero normal
-// is what a zero-initialised input holds; it has no direction to default from.
+// The ground's normal must be finite and of unit length within the camera axes' tolerance. A zero
+// normal is what a zero-initialised input holds; it has no direction to default from.
 Failure validate_ground_normal(const fragsim_vec3& n) {
   if (Failure f = check_vec(n, "ground_normal", finite, "must be finite")) return f;
   const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
@@ -310,7 +310,7 @@ Failure validate_step_input(const fragsim_step_input& in) {
     return f;
   }
   if (!(in.end_time_s > in.time_s)) {
-    // The trap of a zero-initialised input: end 0 at time 0 would protect nothing, silently.
+    // A zero-initialised input has end 0 at time 0, which would silently protect nothing.
     return fail(FRAGSIM_ERROR_INVALID_ARGUMENT,
                 "end_time_s = %g is not after time_s = %g: a step at or past the shot's end "
                 "protects nothing (INFINITY: no end; start from fragsim_default_step_input(), "
@@ -369,7 +369,7 @@ Failure validate_arrays(const fragsim_fragment_arrays& a, std::size_t count) {
                 "FRAGSIM_SCALAR_FLOAT)",
                 type);
   }
-  // One element has no stride to speak of: a caller passing a single fragment may leave them 0.
+  // One element has no stride to speak of, so a caller passing a single fragment may leave them 0.
   if (count <= 1) return {};
   const bool floats = type == FRAGSIM_SCALAR_FLOAT;
   const std::size_t scalar = floats ? sizeof(float) : sizeof(double);
@@ -408,7 +408,7 @@ std::uint32_t camera_warnings(const fragsim_camera_def& c, const fragsim_camera_
   const double speed_mps =
       std::sqrt(p.velocity_mps.x * p.velocity_mps.x + p.velocity_mps.y * p.velocity_mps.y +
                 p.velocity_mps.z * p.velocity_mps.z);
-  // A hair of slack: a camera clamped to exactly V_c must not trip it by rounding.
+  // A hair of slack, so a camera clamped to exactly V_c does not trip it by rounding.
   if (speed_mps > c.max_speed_mps * (1.0 + 1e-9) + 1e-12) w |= FRAGSIM_WARNING_CAMERA_OVER_SPEED;
   if (c.fovy_deg < kFovyLikelyRadians_deg) w |= FRAGSIM_WARNING_FOVY_IN_RADIANS;
   return w;

@@ -15,7 +15,7 @@ constexpr std::uint16_t kTouched = 1u << 9;
 constexpr std::uint16_t kCandidateBits = 0xFF;
 static_assert(FRAGSIM_MAX_CAMERAS <= 8, "one candidate bit per camera");
 
-// A probe's answer this small against the push so far is rounding: the pushed path grazes the
+// A probe's answer this small against the push so far is rounding, since the pushed path grazes the
 // grown box's edge by construction, and the probe's roots see it from either side.
 bool negligible(const Eigen::Vector3d& extra, const Eigen::Vector3d& accel) {
   return norm3(extra) <= 1e-9 * std::max(1.0, norm3(accel));
@@ -57,7 +57,7 @@ void JointPush::make_probe(const EdgeMinParams& params) {
 }
 
 void JointPush::reserve(std::size_t n) {
-  // Each on its own: an allocation that failed half way leaves the others to grow next time.
+  // Each grows on its own, so a failed allocation half way leaves the others to grow next time.
   if (force_N_.size() < n) force_N_.resize(n, Eigen::Vector3d::Zero());
   if (owner_.size() < n) owner_.resize(n, -1);
   if (marks_.size() < n) marks_.resize(n, 0);

@@ -6,8 +6,8 @@ namespace fragsim::control {
 
 void TaskSystem::call(std::int32_t begin, std::int32_t end, std::uint32_t worker, void* job) {
   Job& j = *static_cast<Job*>(job);
-  // A range outside the items, or on a worker whose work space does not exist, is not run: running
-  // it would write out of bounds. The step then fails (broken()).
+  // A range outside the items, or on a worker whose work space does not exist, is not run, as
+  // running it would write out of bounds. The step then fails (broken()).
   if (worker >= static_cast<std::uint32_t>(j.workers) || begin < 0 || end < begin) {
     j.bad_range.store(true, std::memory_order_relaxed);
     return;

@@ -1,9 +1,9 @@
 #pragma once
 // The game's task system (fragsim_controller_def.enqueue_task, finish_task) as the strategies'
-// ParallelFor. A task system is the game's code: a range it runs on a worker index it did not
-// announce, or items it never runs, would corrupt a step silently, so each range is checked on
-// its way in and the items are counted; a step whose ranges did not cover its items exactly once
-// on valid workers is failed by the controller (broken()), never returned as if whole.
+// ParallelFor. A task system is the game's code, and a range it runs on a worker index it did not
+// announce, or items it never runs, would corrupt a step silently, so each range is checked on its
+// way in and the items are counted; a step whose ranges did not cover its items exactly once on
+// valid workers is failed by the controller (broken()), never returned as if whole.
 
 #include <atomic>
 #include <cstdint>

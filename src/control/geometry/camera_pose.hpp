@@ -10,13 +10,13 @@
 
 namespace fragsim {
 
-// The camera at one instant, frustum included: what strategies, metrics and the renderer see (a
+// The camera at one instant, frustum included, as strategies, metrics and the renderer see it (a
 // scene's CameraDef says how it moves; a CameraSample is a recorded instant, without frustum).
 struct CameraPose {
   Eigen::Vector3d eye_m{0, 0, 0};
-  Eigen::Vector3d right{1, 0, 0};     // r: screen x
-  Eigen::Vector3d up{0, 1, 0};        // u: screen y
-  Eigen::Vector3d forward{0, 0, -1};  // f: view direction
+  Eigen::Vector3d right{1, 0, 0};     // r, screen x
+  Eigen::Vector3d up{0, 1, 0};        // u, screen y
+  Eigen::Vector3d forward{0, 0, -1};  // f, view direction
   double fovy_deg = kDefaultFrustum.fovy_deg;
   double aspect = kDefaultFrustum.aspect;
   double near_m = kDefaultFrustum.near_m;
@@ -31,7 +31,7 @@ struct CameraPose {
   double near_half_height_m() const { return half_height_at(near_m); }
   double near_half_width_m() const { return half_width_at(near_m); }
 
-  // World point to camera coordinates: x along right, y along up, z = depth along forward.
+  // World point to camera coordinates (x along right, y along up, z = depth along forward).
   Eigen::Vector3d to_camera(const Eigen::Vector3d& world_m) const {
     const Eigen::Vector3d d = world_m - eye_m;
     return {dot3(d, right), dot3(d, up), dot3(d, forward)};
@@ -50,9 +50,9 @@ struct CameraPose {
   }
 };
 
-// One timed sample of a camera's motion: where the eye is and which way it looks. A recorded
-// track (camera.csv, an engine's export) and the player model are lists of these; the frustum is
-// the scene's, so it is not here.
+// One timed sample of a camera's motion (where the eye is and which way it looks). A recorded track
+// (camera.csv, an engine's export) and the player model are lists of these; the frustum is the
+// scene's, so it is not here.
 struct CameraSample {
   double t_s = 0.0;
   Eigen::Vector3d eye_m{0, 0, 0};

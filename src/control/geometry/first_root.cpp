@@ -20,12 +20,11 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// first_root.hpp's kRootZeroTolerance.
 constexpr double kZeroTolerance = kRootZeroTolerance;
 
-// A cap on the bracketed search: each step either halves the bracket or is a Newton step under
-// half the one before; bisection alone reaches adjacent doubles in ~64 halvings (see `split`),
-// and ~5 steps are typical.
+// A cap on the bracketed search. Each step either halves the bracket or is a Newton step under half
+// the one before; bisection alone reaches adjacent doubles in ~64 halvings (see `split`), and ~5
+// steps are typical.
 constexpr int kMaxIterations = 160;
 
 // Room for one level's roots or break points; a quartic needs at most 4 and 5.
@@ -47,9 +46,9 @@ Quartic derivative(const Quartic& c) {
   return {c[1], 2.0 * c[2], 3.0 * c[3], 4.0 * c[4], 0.0};
 }
 
-// p(x), p'(x) and the size of the terms, sum |c_k| |x|^k, all divided by one positive factor:
-// 1, or |x|^D where Horner's form would overflow. Signs, the Newton step p / p' and the ratio
-// |p| / size that judges "zero" are the same either way.
+// p(x), p'(x) and the size of the terms, sum |c_k| |x|^k, all divided by one positive factor (1, or
+// |x|^D where Horner's form would overflow). Signs, the Newton step p / p' and the ratio |p| / size
+// that judges "zero" are the same either way.
 struct Sample {
   double p;
   double dp;
@@ -57,7 +56,7 @@ struct Sample {
 };
 
 // From the reversed polynomial q(u) = p(x) / x^D, u = 1 / x, whose Horner form multiplies by
-// |u| <= 1 where |x| >= 1: for roots or intervals near the top of the double range.
+// |u| <= 1 where |x| >= 1, for roots or intervals near the top of the double range.
 template <int D>
 Sample sample_reversed(const Quartic& c, double x) {
   const double u = 1.0 / x;
@@ -72,14 +71,14 @@ Sample sample_reversed(const Quartic& c, double x) {
   }
   // p'(x) = x^(D-1) (D q - u q'(u)), which divided by x^D is u (D q - u q').
   double dp = u * (D * q - u * dq);
-  if (D % 2 == 1 && x < 0.0) {  // x^D < 0: divide by |x|^D instead
+  if (D % 2 == 1 && x < 0.0) {  // x^D < 0, so divide by |x|^D instead
     q = -q;
     dp = -dp;
   }
   return {q, dp, size};
 }
 
-// Inlined: it is called two to three times per quadratic's roots, and a call costs as much as
+// Inlined, as it is called two to three times per quadratic's roots, and a call costs as much as
 // its few operations (-ffp-contract=off keeps the rounding the same either way).
 template <int D>
 [[gnu::always_inline]] inline Sample sample(const Quartic& c, double x) {
@@ -111,9 +110,9 @@ To bits_as(const From& from) {
 }
 
 // A point strictly inside (a, b) when there is one, else a or b. The arithmetic midpoint when the
-// ends have one sign and lie within a factor 1024; otherwise 0 or the midpoint of the bit
-// patterns (a geometric mean), so that a bracket spanning many binades still shrinks to adjacent
-// doubles in about 64 halvings.
+// ends have one sign and lie within a factor 1024; otherwise 0 or the midpoint of the bit patterns
+// (a geometric mean), so a bracket spanning many binades still shrinks to adjacent doubles in about
+// 64 halvings.
 double split(double a, double b) {
   if (a < 0.0 && b > 0.0) return 0.0;
   const double small = std::min(std::abs(a), std::abs(b));
@@ -126,12 +125,12 @@ double split(double a, double b) {
 }
 
 // The root of p between a < b, given p(a) = fa and p(b) = fb of strictly opposite signs. Newton's
-// method from the regula falsi point, keeping the bracket; a step that would leave the bracket,
-// or is not under half the step before, is replaced by halving the bracket (the safeguard of
-// Numerical Recipes' rtsafe, section 9.4). Ends when the Newton step is below an ulp or the
-// bracket is two adjacent doubles: as close to the computed p's sign change as bisection gets.
-// One search as a state advanced an iteration at a time, so that many of them can be advanced in
-// turn (solve_bracketed_many): each search does the same operations either way.
+// method from the regula falsi point, keeping the bracket; a step that would leave the bracket, or
+// is not under half the step before, is replaced by halving the bracket (the safeguard of Numerical
+// Recipes' rtsafe, section 9.4). Ends when the Newton step is below an ulp or the bracket is two
+// adjacent doubles, as close to the computed p's sign change as bisection gets. One search as a
+// state advanced an iteration at a time, so many of them can be advanced in turn
+// (solve_bracketed_many), and each search does the same operations either way.
 template <int D>
 struct BracketedSearch {
   const Quartic* c = nullptr;
@@ -182,7 +181,7 @@ double solve_bracketed(const Quartic& c, double a, double b, double fa, double f
   return search.x;
 }
 
-// Every search to its end, advanced in turn: one search's iteration is a chain of dependent
+// Every search to its end, advanced in turn. One search's iteration is a chain of dependent
 // operations (Horner's rule, a division), so taking several chains in turn lets the processor
 // overlap them, where one search alone waits on each.
 template <int D>
@@ -206,13 +205,13 @@ void solve_bracketed_many(std::span<BracketedSearch<D>> searches) {
 template <int D>
 std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out);
 
-// The root of a quadratic between a < b where p(a) = fa and p(b) = fb have strictly opposite
-// signs (p monotone between, so the exact p has one root there): the stable closed form, about a
-// third of the bracketed search's cost (a square root and two divisions against ~5 Newton
-// iterations of Horner's rule). Its error is a few ulps of the root plus the discriminant's
-// rounding, the same order as the search's stopping rule (docs/benchmarks.md, "The worst
-// frame"). Where rounding puts neither closed-form root inside [a, b] (a discriminant lost to
-// cancellation, coefficients near the ends of the double range), the search decides.
+// The root of a quadratic between a < b where p(a) = fa and p(b) = fb have strictly opposite signs
+// (p monotone between, so the exact p has one root there), by the stable closed form, about a third
+// of the bracketed search's cost (a square root and two divisions against ~5 Newton iterations of
+// Horner's rule). Its error is a few ulps of the root plus the discriminant's rounding, the same
+// order as the search's stopping rule (docs/benchmarks.md, "The worst frame"). Where rounding puts
+// neither closed-form root inside [a, b] (a discriminant lost to cancellation, coefficients near
+// the ends of the double range), the search decides.
 double quadratic_root_between(const Quartic& q, double a, double b, double fa, double fb) {
   const double c2 = q[2];
   const double c1 = q[1];
@@ -230,7 +229,7 @@ double quadratic_root_between(const Quartic& q, double a, double b, double fa, d
   return solve_bracketed<2>(q, a, b, fa, fb);
 }
 
-// The crossing of p between two break points: closed form for a quadratic, else the search.
+// The crossing of p between two break points (closed form for a quadratic, else the search).
 template <int D>
 double root_between(const Quartic& c, double a, double b, double fa, double fb) {
   if constexpr (D == 2) {
@@ -241,7 +240,7 @@ double root_between(const Quartic& c, double a, double b, double fa, double fb) 
 }
 
 // The roots of a x^2 + b x + c (a != 0) strictly inside (lo, hi), ascending, for use as break
-// points: the stable formula, and where rounding makes the discriminant negative the vertex
+// points. It uses the stable formula, and where rounding makes the discriminant negative the vertex
 // stands in for two close roots (an extra break point is harmless, a missing one is not). Returns
 // nothing where the formula could over- or underflow; the caller then searches instead.
 std::optional<std::size_t> quadratic_break_points(const Quartic& q, double lo, double hi,
@@ -271,7 +270,7 @@ std::optional<std::size_t> quadratic_break_points(const Quartic& q, double lo, d
   return count;
 }
 
-// lo, the roots of p' strictly inside (lo, hi) ascending, then hi: p is monotone between
+// lo, the roots of p' strictly inside (lo, hi) ascending, then hi, so p is monotone between
 // consecutive points (up to rounding, where p' is itself within rounding of zero).
 template <int D>
 std::size_t break_points(const Quartic& c, double lo, double hi, Points& pts) {
@@ -305,7 +304,7 @@ std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out) {
     const std::size_t n = break_points<D>(c, lo, hi, pts);
     Sample sa = sample<D>(c, pts[0]);
     bool za = near_zero(sa);
-    // A break point where p vanishes to rounding is a root: a double root is found here.
+    // A break point where p vanishes to rounding is a root; a double root is found here.
     if (za) add(pts[0]);
     for (std::size_t i = 0; i + 1 < n; ++i) {
       const Sample sb = sample<D>(c, pts[i + 1]);
@@ -321,15 +320,15 @@ std::size_t real_roots_of(const Quartic& c, double lo, double hi, Points& out) {
   return count;
 }
 
-// True when p > 0 on [lo, hi] with a margin beyond the zero judgement, certified by p's
-// Bernstein coefficients on [lo, hi] (p lies in their convex hull). One pass of ~40 flops
-// settles most paths that stay clear of the ball. With size = sum |c_k| (|lo| + hi - lo)^k, which
-// bounds the terms anywhere in the interval, the margin 32 eps size covers the conversion's
-// rounding (< 16 eps size), the zero tolerance and Horner's error (8 eps size): when this says
-// "positive" the full search would too.
+// True when p > 0 on [lo, hi] with a margin beyond the zero judgement, certified by p's Bernstein
+// coefficients on [lo, hi] (p lies in their convex hull). One pass of ~40 flops settles most paths
+// that stay clear of the ball. With size = sum |c_k| (|lo| + hi - lo)^k, which bounds the terms
+// anywhere in the interval, the margin 32 eps size covers the conversion's rounding
+// (< 16 eps size), the zero tolerance and Horner's error (8 eps size), so when this says "positive"
+// the full search would too.
 template <int D>
 bool clearly_positive(const Quartic& c, double lo, double hi) {
-  // Taylor shift to lo and scale to [0, 1]: a_k = p^(k)(lo) h^k / k!.
+  // Taylor shift to lo and scale to [0, 1], so a_k = p^(k)(lo) h^k / k!.
   std::array<double, D + 1> a;
   for (int k = 0; k <= D; ++k) a[static_cast<std::size_t>(k)] = at(c, k);
   if (lo != 0.0) {
@@ -344,7 +343,7 @@ bool clearly_positive(const Quartic& c, double lo, double hi) {
     a[k] *= hk;
   }
   // h^k out of the normal range (overflow to inf, or underflow that silently drops the high-order
-  // terms) makes the certificate meaningless: let the full search decide (found by fuzzing).
+  // terms) makes the certificate meaningless, so the full search decides (found by fuzzing).
   if (!std::isfinite(hk) || (h > 0.0 && hk < std::numeric_limits<double>::min())) return false;
   for (double v : a) {
     if (!std::isfinite(v)) return false;
@@ -376,20 +375,20 @@ std::optional<double> first_nonpositive_of(const Quartic& c, double lo, double h
   const std::size_t n = break_points<D>(c, lo, hi, pts);
   for (std::size_t i = 1; i < n; ++i) {
     const Sample s = sample<D>(c, pts[i]);
-    // A break point within rounding of zero is a touch (a double root at a critical point): it
-    // is exact there, while a root search would stop up to sqrt(eps) early, where rounding first
-    // makes p look non-positive.
+    // A break point within rounding of zero is a touch (a double root at a critical point). It is
+    // exact there, while a root search would stop up to sqrt(eps) early, where rounding first makes
+    // p look non-positive.
     if (near_zero(s)) return pts[i];
-    // p > 0 at the previous point, < 0 here, monotone between: one crossing.
+    // p > 0 at the previous point, < 0 here, monotone between, so one crossing.
     if (s.p < 0.0) return root_between<D>(c, pts[i - 1], pts[i], prev.p, s.p);
     prev = s;
   }
   return std::nullopt;
 }
 
-// A bracket of a quartic's first crossing near a guess (first_nonpositive_near), given p(lo) > 0
-// beyond rounding: [a, b] with p certified positive on [lo, a], p(a) > 0 > p(b) beyond rounding,
-// and p' certified negative on [a, b], so that the first crossing is the one in [a, b].
+// A bracket [a, b] of a quartic's first crossing near a guess (first_nonpositive_near), given
+// p(lo) > 0 beyond rounding, with p certified positive on [lo, a], p(a) > 0 > p(b) beyond rounding,
+// and p' certified negative on [a, b], so the first crossing is the one in [a, b].
 struct Bracket {
   double a, b, fa, fb;
 };
@@ -410,7 +409,7 @@ std::optional<Bracket> bracket_near(const Quartic& c, double lo, double hi, doub
 }
 
 bool usable(const Quartic& c, double lo, double hi) {
-  // x - x is 0 for a finite x and NaN for an infinite or NaN one: the sum is 0 only when every
+  // x - x is 0 for a finite x and NaN for an infinite or NaN one, so the sum is 0 only when every
   // number is finite (one test instead of seven).
   const double sum = (lo - lo) + (hi - hi) + (c[0] - c[0]) + (c[1] - c[1]) + (c[2] - c[2]) +
                      (c[3] - c[3]) + (c[4] - c[4]);
@@ -459,7 +458,7 @@ RootList list_real_roots(const Quartic& c, double lo, double hi) {
       r.n = real_roots_of<4>(c, lo, hi, r.x);
       break;
     default:
-      break;  // a constant: no isolated roots (all or none)
+      break;  // a constant has no isolated roots (all or none)
   }
   return r;
 }
@@ -480,7 +479,7 @@ std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi) 
   }
 }
 
-// FirstNonpositiveBatch: first_nonpositive_of<4> cut where it waits on a root search. Per
+// FirstNonpositiveBatch is first_nonpositive_of<4> cut where it waits on a root search. Per
 // polynomial, first the derivative's roots as real_roots_of<3> finds them (its break points and
 // samples, each sign change a search to run, each near-zero sample a root as it is), then, with
 // every one of those searches done, the break points of the quartic and its first sign change (a
@@ -500,7 +499,7 @@ struct FirstNonpositiveBatch::Work {
   };
   explicit Work(MemoryResource* m) : mem(m) {}
   Work(const Work&) = delete;
-  // The contents only: each keeps its own resource.
+  // The contents only, as each keeps its own resource.
   void copy_from(const Work& o) {
     out = o.out;
     pending = o.pending;
@@ -518,7 +517,7 @@ struct FirstNonpositiveBatch::Work {
   // A Work allocated from mem, as everything it holds.
   static Work* make(MemoryResource* mem) {
     void* p = mem->allocate(sizeof(Work), alignof(Work));
-    return new (p) Work(mem);  // cannot throw: the vectors start empty
+    return new (p) Work(mem);  // cannot throw, as the vectors start empty
   }
 };
 
@@ -582,7 +581,7 @@ std::span<const std::optional<double>> FirstNonpositiveBatch::run(std::span<cons
       continue;
     }
     if (clearly_positive<4>(c[j], lo, hi[j])) continue;
-    // A guess that brackets the crossing skips the derivative's roots: straight to the search.
+    // A guess that brackets the crossing skips the derivative's roots, straight to the search.
     if (!guess.empty()) {
       if (const std::optional<Bracket> br = bracket_near(c[j], lo, hi[j], guess[j], half_width)) {
         pj.state = Work::State::kCrossing;

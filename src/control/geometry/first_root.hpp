@@ -4,12 +4,12 @@
 // the bracket. Unlike the closed-form quartic formulas this keeps double roots (a path tangent to
 // the ball) and clustered roots.
 //
-// Accuracy: p is evaluated by Horner's rule, whose error is at most ~4 eps size(x), size(x) =
-// sum |c_k| |x|^k; a root is found to within what that error allows: a simple root to about
-// 8 eps size / |p'|, a root of multiplicity m to about (8 eps size / |p^(m) / m!|)^(1/m), plus an
-// ulp. Where Horner's form would overflow (|x| or the coefficients near the top of the double
-// range) p is evaluated as p(x) / x^d instead. tests/geometry/first_root_reference_test.cpp checks
-// it against a long-double companion-matrix reference.
+// p is evaluated by Horner's rule, whose error is at most ~4 eps size(x), where
+// size(x) = sum |c_k| |x|^k. A root is found to within what that error allows (about
+// 8 eps size / |p'| for a simple root, (8 eps size / |p^(m) / m!|)^(1/m) for a root of multiplicity
+// m, plus an ulp). Where Horner's form would overflow (|x| or the coefficients near the top of the
+// double range) p is evaluated as p(x) / x^d instead. tests/geometry/first_root_reference_test.cpp
+// checks it against a long-double companion-matrix reference.
 
 #include <array>
 #include <limits>
@@ -26,8 +26,8 @@ namespace fragsim {
 using Quartic = std::array<double, 5>;
 
 // Horner's rounding error on a polynomial of degree d is at most gamma_2d |terms| ~ d eps |terms|
-// (Higham, "Accuracy and Stability of Numerical Algorithms", section 5.1): 4 eps for a quartic.
-// A value within kRootZeroTolerance times the size of its terms is indistinguishable from zero.
+// (Higham, "Accuracy and Stability of Numerical Algorithms", section 5.1), 4 eps for a quartic. A
+// value within kRootZeroTolerance times the size of its terms is indistinguishable from zero.
 inline constexpr double kRootZeroTolerance = 4.0 * std::numeric_limits<double>::epsilon();
 
 // Horner's rule, as is.
@@ -38,7 +38,7 @@ double evaluate(const Quartic& c, double x);
 // Nothing when lo > hi or an input is not finite.
 std::vector<double> real_roots(const Quartic& c, double lo, double hi);
 
-// real_roots without allocating, for hot loops: the same roots in a fixed array.
+// real_roots without allocating, for hot loops (the same roots in a fixed array).
 struct RootList {
   // Room for every root the search can report; only the first n are set (a hot loop's list is
   // not cleared first).
@@ -56,17 +56,17 @@ RootList list_real_roots(const Quartic& c, double lo, double hi);
 // without a search.
 std::optional<double> first_nonpositive(const Quartic& c, double lo, double hi);
 
-// first_nonpositive with a guess of where the first crossing is (say the last step's, moved on by
-// a step): when p is certified positive on [lo, guess - half_width] (its Bernstein coefficients),
+// first_nonpositive with a guess of where the first crossing is (say the last step's, moved on by a
+// step). When p is certified positive on [lo, guess - half_width] (its Bernstein coefficients),
 // negative at guess + half_width and decreasing in between (its derivative's), the crossing is
-// searched in that bracket alone, skipping the derivative's roots; otherwise, or for a degree
-// other than 4, first_nonpositive itself. The same crossing either way, to the search's accuracy
-// (not always the same last bits: the bracket differs). A NaN guess is no guess.
+// searched in that bracket alone, skipping the derivative's roots; otherwise, or for a degree other
+// than 4, first_nonpositive itself. The same crossing either way, to the search's accuracy (not
+// always the same last bits, as the bracket differs). A NaN guess is no guess.
 std::optional<double> first_nonpositive_near(const Quartic& c, double lo, double hi, double guess,
                                              double half_width);
 
-// first_nonpositive of many polynomials, c[j] on [lo, hi[j]], with the same answers bit for bit:
-// the root searches of all of them (those of the derivative that bracket each, then each one's
+// first_nonpositive of many polynomials, c[j] on [lo, hi[j]], with the same answers bit for bit.
+// The root searches of all of them (those of the derivative that bracket each, then each one's
 // first crossing) are advanced in turn, so the processor overlaps their chains of dependent
 // operations where one search alone waits on each. Keeps its work space between calls.
 class FirstNonpositiveBatch {
@@ -80,8 +80,8 @@ class FirstNonpositiveBatch {
   // One answer per polynomial, in order; valid until the next call.
   std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
                                              std::span<const double> hi);
-  // The same with a guess per polynomial (NaN: none), as first_nonpositive_near: the same answers
-  // as it, bit for bit.
+  // The same with a guess per polynomial (NaN for none), as first_nonpositive_near and with its
+  // answers, bit for bit.
   std::span<const std::optional<double>> run(std::span<const Quartic> c, double lo,
                                              std::span<const double> hi,
                                              std::span<const double> guess, double half_width);

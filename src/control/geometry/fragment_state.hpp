@@ -1,5 +1,5 @@
 #pragma once
-// What the simulation shows of one fragment after a step: plain Eigen data, no engine handles.
+// One fragment as the simulation shows it after a step, in plain Eigen data, no engine handles.
 
 #include <Eigen/Core>
 
@@ -13,7 +13,7 @@ struct FragmentState {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // body axes as columns, in world
   // A box of these half extents; with `shape`, the box about the centre of mass that holds it.
   Eigen::Vector3d half_extents_m = Eigen::Vector3d::Zero();
-  const ConvexShape* shape = nullptr;  // null: the fragment is the box itself
+  const ConvexShape* shape = nullptr;  // null if the fragment is the box itself
   double mass_kg = 0.0;
   double radius_m = 0.0;  // bounding sphere about the centre of mass
   bool touched = false;   // had a contact (ground, wall, another fragment) in the last step

@@ -11,15 +11,15 @@ namespace fragsim {
 
 inline constexpr double kPi = 3.14159265358979323846;
 
-// Written once, in the operation order every result so far was computed with: a change of order
-// here (say fovy * (kPi / 360)) would move the last bit and every pinned result with it.
+// Written once, in the operation order every pinned result is computed with, since a change of
+// order here (say fovy * (kPi / 360)) would move the last bit and every pinned result with it.
 inline double tan_half_fovy(double fovy_deg) {
   return std::tan(0.5 * fovy_deg * kPi / 180.0);
 }
 
-// A frustum as settings state it, and the one home of its defaults: a scene's camera
-// (sim/scene.hpp), a camera pose (camera_pose.hpp), the strategies' parameter rules and the
-// C API's default camera all start from these.
+// A frustum as settings state it, and the one home of its defaults, which a scene's camera
+// (sim/scene.hpp), a camera pose (camera_pose.hpp), the strategies' parameter rules and the C API's
+// default camera all start from.
 struct FrustumDef {
   double fovy_deg = 60.0;  // vertical field of view
   double aspect = 16.0 / 9.0;
@@ -49,12 +49,12 @@ class Frustum {
   double far_m() const { return far_m_; }
 
   // Half extents of the cross-section at view depth `depth_m`. The width scales the height
-  // (aspect * (depth * tan_y)) rather than using tan_x: that is the order CameraPose has always
-  // had, and depth * tan_x rounds differently.
+  // (aspect * (depth * tan_y)) rather than using tan_x, as CameraPose uses that order and
+  // depth * tan_x rounds differently.
   double half_height_at(double depth_m) const { return depth_m * tan_y_; }
   double half_width_at(double depth_m) const { return aspect_ * half_height_at(depth_m); }
 
-  // A camera-space point in units of the cross-section at its own depth: [-1, 1]^2 is on screen.
+  // A camera-space point in units of the cross-section at its own depth, on screen in [-1, 1]^2.
   Eigen::Vector2d normalized(const Eigen::Vector3d& p_m) const {
     return {p_m.x() / half_width_at(p_m.z()), p_m.y() / half_height_at(p_m.z())};
   }
@@ -67,11 +67,11 @@ class Frustum {
     return (std::abs(p_m.y()) - tan_y_ * p_m.z()) / side_norm_y_;
   }
 
-  // Whether a sphere (camera-space centre) may show: it is not wholly in front of depth front_m,
-  // beyond the far plane or outside a side plane. A conservative cull (near the frustum's edges a
-  // sphere outside it can pass). front_m is a parameter because the near plane is not always the
-  // bound: the simulation culls from the eye, since the near-plane strategy moves the plane.
-  // Non-finite input that gets past the depth tests is answered false by the last comparison.
+  // Whether a sphere (camera-space centre) may show (not wholly in front of depth front_m, beyond
+  // the far plane or outside a side plane). A conservative cull (near the frustum's edges a sphere
+  // outside it can pass). front_m is a parameter because the near plane is not always the bound
+  // (the simulation culls from the eye, since the near-plane strategy moves the plane). Non-finite
+  // input that gets past the depth tests is answered false by the last comparison.
   bool sphere_may_show(const Eigen::Vector3d& centre_m, double radius_m, double front_m) const {
     if (centre_m.z() + radius_m < front_m || centre_m.z() - radius_m > far_m_) return false;
     if (side_distance_x(centre_m) > radius_m) return false;
@@ -91,7 +91,7 @@ class Frustum {
   double side_norm_y_;
 };
 
-// A point on the image, in pixels: x from the left edge, y DOWN from the top edge.
+// A point on the image in pixels (x from the left edge, y DOWN from the top edge).
 struct ScreenPoint {
   double x = 0.0;
   double y = 0.0;

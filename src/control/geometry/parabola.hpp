@@ -1,8 +1,8 @@
 #pragma once
-// The ballistic path, one type for everyone: x(t) = p0 + v0 t + a t^2 / 2 with the full
+// The ballistic path x(t) = p0 + v0 t + a t^2 / 2, one type for everyone, with the full
 // acceleration a, its form relative to a (moving) point or a camera, and one coordinate's
-// coefficients c0 + c1 t + c2 t^2 (c2 = a / 2). Halving is exact in binary floating point (short
-// of the subnormal range), so code that stores half the acceleration gets the same bits from
+// coefficients c0 + c1 t + c2 t^2 (c2 = a / 2). Halving is exact in binary floating point (short of
+// the subnormal range), so code that stores half the acceleration gets the same bits from
 // half_accel_mps2() or axis().
 
 #include <Eigen/Core>
@@ -11,14 +11,13 @@
 
 namespace fragsim {
 
-// One coordinate of a parabola: c0 + c1 t + c2 t^2.
+// One coordinate of a parabola, c0 + c1 t + c2 t^2.
 struct AxisQuadratic {
   double c0 = 0.0;
   double c1 = 0.0;
   double c2 = 0.0;  // half the acceleration
 
-  // Horner's form: one rounding fewer than the expanded sum, and the order the edge-min solver's
-  // slabs were computed in.
+  // Horner's form, one rounding fewer than the expanded sum and the order of edge-min's slabs.
   double at(double t_s) const { return c0 + t_s * (c1 + t_s * c2); }
 };
 
@@ -27,8 +26,8 @@ struct Parabola {
   Eigen::Vector3d v0_mps = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_mps2 = Eigen::Vector3d::Zero();  // the full acceleration
 
-  // The expanded sum p0 + v0 t + ((a / 2) t) t, not Horner's: the order the collision prediction
-  // has always used (Horner's form rounds differently).
+  // The expanded sum p0 + v0 t + ((a / 2) t) t, not Horner's, as the collision prediction uses that
+  // order (Horner's form rounds differently).
   Eigen::Vector3d at(double t_s) const {
     return p0_m + v0_mps * t_s + 0.5 * accel_mps2 * t_s * t_s;
   }
@@ -48,7 +47,7 @@ struct Parabola {
 };
 
 // The path in camera coordinates (x right, y up, z depth) as seen from a camera that keeps its
-// orientation and moves at camera_velocity_mps: rotated after subtracting, so each coordinate is
+// orientation and moves at camera_velocity_mps, rotated after subtracting, so each coordinate is
 // one dot product of the world difference.
 inline Parabola in_camera_frame(const Parabola& path, const CameraPose& camera,
                                 const Eigen::Vector3d& camera_velocity_mps) {

@@ -1,13 +1,13 @@
 #pragma once
 // When a ballistic path comes down through a level plane (the ground, or the height a look-ahead
-// ends at): with h(t) = c + b t + a t^2 the path's height above the plane, the later root of h,
-// where h is falling, if it lies ahead (t > 0). The one formula behind edge's t_G
-// (time_to_horizon, one path or two at once) and edge-min's time to the ground.
+// ends at), as the later root of h(t) = c + b t + a t^2, the path's height above the plane, where h
+// is falling, if it lies ahead (t > 0). The one formula behind edge's t_G (time_to_horizon, one
+// path or two at once) and edge-min's time to the ground.
 //
-// The roots are the stable ones: q = -(b + sign(b) sqrt(b^2 - 4 a c)) / 2, roots q / a and c / q,
-// so neither subtracts nearly equal numbers. The formula is written once over an operation set
+// The roots are the stable ones, q / a and c / q with q = -(b + sign(b) sqrt(b^2 - 4 a c)) / 2, so
+// neither subtracts nearly equal numbers. The formula is written once over an operation set
 // (ScalarOps below, lanes::LaneOps for two paths at once) as selections, not branches, so every
-// width computes the same IEEE operations in the same order: the same bits.
+// width computes the same IEEE operations in the same order, to the same bits.
 
 #include <algorithm>
 #include <cmath>
@@ -57,8 +57,8 @@ typename Ops::V time_to_plane_s(double a, typename Ops::V b, typename Ops::V c,
   return Ops::select(down_ahead, later, none);
 }
 
-// One path's height above the plane, as a coordinate's quadratic c0 + c1 t + c2 t^2: the time it
-// comes down through the plane, or nothing.
+// The time one path comes down through the plane, or nothing, from its height above the plane as a
+// coordinate's quadratic c0 + c1 t + c2 t^2.
 inline std::optional<double> time_to_plane_s(const AxisQuadratic& height_m) {
   constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
   const double t = time_to_plane_s<ScalarOps>(height_m.c2, height_m.c1, height_m.c0, kNone);

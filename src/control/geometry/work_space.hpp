@@ -1,9 +1,9 @@
 #pragma once
 // Work arrays sized ahead of the steps that use them, with their pages touched. Reserving alone
 // leaves a large block unmapped until its first write, so the first step that fills it pays one
-// page fault per 4 KiB (2,277 of them, tens of milliseconds, for `edge` at 15,625 fragments):
-// in a game that is a hitch on the explosion's first frame. Writing the block once here moves
-// that cost to reset(), before the explosion.
+// page fault per 4 KiB (2,277 of them, tens of milliseconds, for `edge` at 15,625 fragments), which
+// in a game is a hitch on the explosion's first frame. Writing the block once here moves that cost
+// to reset(), before the explosion.
 
 #include <cstddef>
 

@@ -1,8 +1,8 @@
 #pragma once
-// Where the library's containers get their memory: a MemoryResource, and ResourceVector, a
-// std::vector that allocates from one. The controller hands every container it owns its
-// allocator hook (api/hook_resource.hpp); the tool and the tests use the default resource, the
-// C++ runtime's operator new.
+// MemoryResource, where the library's containers get their memory, and ResourceVector, a
+// std::vector that allocates from one. The controller hands every container it owns its allocator
+// hook (api/hook_resource.hpp); the tool and the tests use the default resource, the C++ runtime's
+// operator new.
 //
 // The library's own instead of std::pmr because the WebAssembly toolchain it is built with
 // (emscripten 3.1.6, libc++ 14) has no <memory_resource>; the contract is std::pmr's, narrowed
@@ -18,13 +18,13 @@ namespace fragsim {
 class MemoryResource {
  public:
   virtual ~MemoryResource() = default;
-  // Throws std::bad_alloc when it has no memory to give: the containers' own way of failing.
+  // Throws std::bad_alloc when it has no memory to give, the containers' own way of failing.
   virtual void* allocate(std::size_t bytes, std::size_t alignment) = 0;
   virtual void deallocate(void* p, std::size_t bytes, std::size_t alignment) = 0;
 };
 
-// The C++ runtime's operator new and delete, called as a `new T[n]` would: the plain operator
-// for alignments it guarantees, the aligned one beyond. A program that replaces operator new sees
+// The C++ runtime's operator new and delete, called as a `new T[n]` would (the plain operator for
+// alignments it guarantees, the aligned one beyond). A program that replaces operator new sees
 // every allocation made through it.
 class NewDeleteResource final : public MemoryResource {
  public:
@@ -60,7 +60,7 @@ class ResourceAllocator {
   using propagate_on_container_swap = std::false_type;
   using is_always_equal = std::false_type;
 
-  // Implicit, as polymorphic_allocator's: a container is built from a resource pointer.
+  // Implicit, as polymorphic_allocator's, so a container is built from a resource pointer.
   ResourceAllocator(MemoryResource* resource = default_memory_resource()) noexcept  // NOLINT
       : resource_(resource) {}
   template <class U>

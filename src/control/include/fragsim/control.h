@@ -1,10 +1,10 @@
-/* fragsim control: keeps explosion debris off a game camera's near plane.
+/* fragsim control keeps explosion debris off a game camera's near plane.
  *
- * Once per physics step, before the engine integrates, the game hands the controller the poses
- * of its cameras and its fragments (position, velocity, size, mass, an id); the controller writes
- * one force per fragment, in newtons, for the engine to apply during that step. Most forces are
- * zero: only the fragments whose paths would meet a camera are pushed, toward the nearest screen
- * edge, so they leave the picture through its border instead of being cut open by the near plane.
+ * Once per physics step, before the engine integrates, the game hands the controller the poses of
+ * its cameras and its fragments (position, velocity, size, mass, an id); the controller writes one
+ * force per fragment, in newtons, for the engine to apply during that step. Most forces are zero,
+ * as only the fragments whose paths would meet a camera are pushed, toward the nearest screen edge,
+ * so they leave the picture through its border instead of being cut open by the near plane.
  *
  *   fragsim_controller_def def = fragsim_default_controller_def();
  *   fragsim_controller_id ctl;
@@ -24,30 +24,29 @@
  * Applying the forces, in an engine with a fixed physics substep (Bullet, PhysX, Jolt, ODE):
  *   1. Call fragsim_controller_step once per physics substep, before it, with that substep's dt_s
  *      and the state the last substep left (not once per rendered frame).
- *   2. Apply each force for that one substep only, never as a force that persists: in Bullet an
+ *   2. Apply each force for that one substep only, never as a force that persists. In Bullet, an
  *      impulse F dt_s (applyCentralImpulse) from the pre-tick callback.
- *   3. Wake a sleeping body you push (Bullet: activate(true)).
- *   4. Pass each camera as the physics sees it at the start of the substep: its pose interpolated
- *      to the substep's time and its velocity over the substep. Declare the camera's bounds as the
- *      game enforces them.
- *   5. fragsim_fragment.touched is read only by edge with replan = CONTACT: leave it 0, or the
+ *   3. Wake a sleeping body you push (in Bullet, activate(true)).
+ *   4. Pass each camera as the physics sees it at the start of the substep, with its pose
+ *      interpolated to the substep's time and its velocity over the substep. Declare the camera's
+ *      bounds as the game enforces them.
+ *   5. fragsim_fragment.touched is read only by edge with replan = CONTACT, so leave it 0, or the
  *      array NULL, and do not walk the engine's contact lists for it.
  *
- * Threads: the library creates none. One controller must be used by one thread at a time, and
+ * The library creates no threads. One controller must be used by one thread at a time, and
  * different controllers may be used from different threads at once. A controller given a task
- * system (fragsim_controller_def.enqueue_task) runs the ranges of its steps on the game's
- * workers; the call that steps still returns only when they are done. The defaults functions,
+ * system (fragsim_controller_def.enqueue_task) runs the ranges of its steps on the game's workers;
+ * the call that steps still returns only when they are done. The defaults functions,
  * fragsim_version, fragsim_version_string and fragsim_status_string are safe from any thread.
  *
- * Errors: every function that can fail returns a fragsim_status. No function throws, aborts or
- * writes a non-finite number to the caller. A refused call leaves the controller as it was and
- * says why in fragsim_controller_last_error, naming the field and the value refused (the step's
- * comment lists the two failures that forget every fragment instead).
+ * Every function that can fail returns a fragsim_status. No function throws, aborts or writes a
+ * non-finite number to the caller. A refused call leaves the controller unchanged and says why in
+ * fragsim_controller_last_error, naming the field and the value refused (the step's comment lists
+ * the two failures that forget every fragment instead).
  *
- * Versions: a 1.x library runs a program built against any earlier 1.y header. A 1.x release may
- * add functions, enum values and warning bits, and fix bugs; it never changes a struct, a
- * function's signature, a default or a rule that a call is refused by. C99; also compiles as
- * C++. */
+ * A 1.x library runs a program built against any earlier 1.y header. A 1.x release may add
+ * functions, enum values and warning bits, and fix bugs; it never changes a struct, a function's
+ * signature, a default or a rule that a call is refused by. C99; also compiles as C++. */
 #ifndef FRAGSIM_CONTROL_H
 #define FRAGSIM_CONTROL_H
 
@@ -92,13 +91,13 @@ FRAGSIM_API fragsim_status fragsim_controller_destroy(fragsim_controller_id cont
 /* Nonzero while the id names a live controller. */
 FRAGSIM_API int fragsim_controller_is_valid(fragsim_controller_id controller);
 
-/* Forgets every fragment: the next step treats every id as new. Keeps the room reserved and
+/* Forgets every fragment, so the next step treats every id as new. Keeps the room reserved and
  * allocates nothing. */
 FRAGSIM_API fragsim_status fragsim_controller_reset(fragsim_controller_id controller);
 
-/* Makes room for fragment_count fragments now, in [0, FRAGSIM_MAX_FRAGMENTS], so that the
- * explosion's step (every id new) does not pay for growing the controller's work space. A step
- * with at most that many fragments then allocates nothing. */
+/* Makes room for fragment_count fragments now, in [0, FRAGSIM_MAX_FRAGMENTS], so the explosion's
+ * step (every id new) does not pay for growing the controller's work space. A step with at most
+ * that many fragments then allocates nothing. */
 FRAGSIM_API fragsim_status fragsim_controller_reserve(fragsim_controller_id controller,
                                                       int32_t fragment_count);
 
@@ -112,18 +111,18 @@ FRAGSIM_API fragsim_status fragsim_controller_set_cameras(fragsim_controller_id 
                                                           const fragsim_camera_def* cameras,
                                                           int32_t camera_count);
 
-/* One physics step over fragment_count fragments, in [0, FRAGSIM_MAX_FRAGMENTS]: writes one force
- * per fragment into forces_N, in the order of fragments (zero for most). stats may be NULL.
+/* One physics step over fragment_count fragments, in [0, FRAGSIM_MAX_FRAGMENTS]. It writes one
+ * force per fragment into forces_N, in the order of fragments (zero for most). stats may be NULL.
  *
  * On any status other than FRAGSIM_OK, forces_N (when not NULL and fragment_count is in range) is
- * filled with zeros, *stats is zeroed, fragsim_controller_last_error says why, and the
- * controller's state is as it was before the call, so that the call may be retried. Two failures
- * cannot be undone, and forget every fragment instead, as fragsim_controller_reset does (the
- * message says so): FRAGSIM_ERROR_OUT_OF_MEMORY with the occlusion bound on
- * (edge_min.cover_max < 1), which allocates as it steps, and a task system that ran a range on a
- * worker index not below worker_count or did not run every item (FRAGSIM_ERROR_INVALID_ARGUMENT).
+ * filled with zeros, *stats is zeroed, fragsim_controller_last_error says why, and the controller's
+ * state is unchanged, so the call may be retried. Two failures cannot be undone, and forget every
+ * fragment instead, as fragsim_controller_reset does (the message says so):
+ * FRAGSIM_ERROR_OUT_OF_MEMORY with the occlusion bound on (edge_min.cover_max < 1), which allocates
+ * as it steps, and a task system that ran a range on a worker index not below worker_count or did
+ * not run every item (FRAGSIM_ERROR_INVALID_ARGUMENT).
  *
- * Fragments come and go by id: a new id is examined at its first step as every fragment is at the
+ * Fragments come and go by id. A new id is examined at its first step as every fragment is at the
  * explosion; an id absent from a call is forgotten, and if it returns it is new again. */
 FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller_id controller,
                                                    const fragsim_step_input* input,
@@ -131,9 +130,9 @@ FRAGSIM_API fragsim_status fragsim_controller_step(fragsim_controller_id control
                                                    int32_t fragment_count, fragsim_vec3* forces_N,
                                                    fragsim_step_stats* stats);
 
-/* The same with the fragments as the engine's strided arrays; the forces go to arrays->force_N,
- * as doubles or floats (arrays->scalar_type). A refused call writes zeros to force_N only where
- * its layout is known: a valid scalar_type and, with more than one fragment, force stride. */
+/* The same with the fragments as the engine's strided arrays; the forces go to arrays->force_N, as
+ * doubles or floats (arrays->scalar_type). A refused call writes zeros to force_N only where its
+ * layout is known (a valid scalar_type and, with more than one fragment, force stride). */
 FRAGSIM_API fragsim_status fragsim_controller_step_arrays(fragsim_controller_id controller,
                                                           const fragsim_step_input* input,
                                                           const fragsim_fragment_arrays* arrays,
