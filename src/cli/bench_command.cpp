@@ -64,8 +64,8 @@ void print_rows(const std::vector<BenchRow>& rows, std::ostream& out) {
   t.print(out);
 }
 
-// Where the scene's own configuration stands: speed-up over the reference, its errors, and the
-// faster configurations that pay for their speed in error.
+// Where the scene's own configuration stands, with its speed-up over the reference, its errors, and
+// the faster configurations that pay for their speed in error.
 void print_default_verdict(const std::vector<BenchRow>& rows, std::ostream& out) {
   const BenchRow& ref = rows.front();
   const BenchRow* def = nullptr;
@@ -147,7 +147,7 @@ int cmd_bench(const std::vector<std::string>& args) {
       throw UsageError("--out " + path + ": exists (use --force to overwrite)");
     }
     try {
-      file.emplace(path);  // fails now, not after minutes of running, if the folder is unwritable
+      file.emplace(path);  // fails here, not after minutes of running, if the folder is unwritable
     } catch (const std::runtime_error& e) {
       throw UsageError(std::string("--out: ") + e.what());
     }

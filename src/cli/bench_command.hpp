@@ -1,5 +1,5 @@
 #pragma once
-// `fragsim bench`: run time against error on one scene and strategy
+// `fragsim bench` measures run time against error on one scene and strategy
 // (experiments/time_vs_error.hpp), printed as a table with the Pareto front marked, and written as
 // CSV for data/plots/pareto.gp.
 

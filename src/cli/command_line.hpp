@@ -1,5 +1,5 @@
 #pragma once
-// What every subcommand shares: its options plus every scene key, parsed into a scene.
+// What every subcommand shares, its options plus every scene key, parsed into a scene.
 
 #include <boost/program_options.hpp>
 #include <stdexcept>
@@ -10,7 +10,7 @@
 
 namespace fragsim::cli {
 
-// A usage error: printed as one line, exit status 2.
+// A usage error, printed as one line, with exit status 2.
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -21,10 +21,10 @@ struct ParsedCommand {
   bool help_shown = false;
 };
 
-// Parses `args` with the command's own options, --scene, --help and every scene key; loads the
-// scene. Prints the help and sets help_shown when asked; prints the scene's warnings (a track
-// that does not cover the run, a key without effect) on stderr, one "warning: " line each.
-// Throws UsageError.
+// Parses `args` with the command's own options, --scene, --help and every scene key, and loads the
+// scene. Prints the help and sets help_shown when asked; prints the scene's warnings (a track that
+// does not cover the run, a key without effect) on stderr, one "warning: " line each. Throws
+// UsageError.
 ParsedCommand parse_command(const std::string& command, const std::vector<std::string>& args,
                             boost::program_options::options_description own);
 

@@ -32,8 +32,8 @@ namespace po = boost::program_options;
 
 namespace {
 
-// --bake FILE.glb: the recorder and one file per strategy, opened before the run so that a path
-// that cannot be written fails at once; nothing appears unless every bake fits the limit.
+// For --bake FILE.glb, the recorder and one file per strategy, opened before the run so that a path
+// that cannot be written fails at once. Nothing appears unless every bake fits the limit.
 struct BakeRequest {
   std::vector<std::string> paths;  // in `names` order
   OutputSet files;                 // the same order
@@ -93,8 +93,8 @@ std::unique_ptr<BakeRequest> bake_request(const cli::ParsedCommand& p,
   return bake;
 }
 
-// Writes every strategy's bake, or none: none if one is over the limit or one cannot be written
-// whole (a full disk).
+// Writes every strategy's bake, or none if one is over the limit or one cannot be written whole (a
+// full disk).
 void write_bakes(BakeRequest& bake, const std::vector<std::string>& names) {
   std::vector<const std::string*> bytes;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -166,7 +166,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   if (p.options.count("trajectories") && !p.options.count("csv")) {
     throw UsageError("--trajectories: needs --csv DIR");
   }
-  // Declared before every file written into them: a failure removes the files first, then the
+  // Declared before every file written into them, so a failure removes the files first, then the
   // folders this run created.
   std::optional<OutputFolder> csv_folder = output_folder(p, "csv");
   std::optional<OutputFolder> report_folder = output_folder(p, "report");
@@ -187,7 +187,7 @@ int run_and_report(const cli::ParsedCommand& p, const std::vector<std::string>& 
   }
   std::optional<FrameRecorder> recorder;
   if (sheet || report_folder) recorder.emplace(recorded_steps);
-  // The report's 3D view: recorded only when this build can draw it.
+  // The report's 3D view is recorded only when this build can draw it.
   const BundledThreeJs three = bundled_three_js();
   std::optional<ViewerRecorder> viewer;
   if (report_folder) {

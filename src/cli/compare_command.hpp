@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim compare`: every chosen strategy on the same scene and seed, the table printed, and the
-// outputs asked for written (CSV files, the HTML report, bakes, a contact sheet). `run` is the
+// `fragsim compare` runs every chosen strategy on the same scene and seed, prints the table, and
+// writes the outputs asked for (CSV files, the HTML report, bakes, a contact sheet). `run` is the
 // same with one strategy.
 
 #include <boost/program_options.hpp>

@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim fracture`: the pieces a scene's object breaks into, written as a mesh file, to look at
-// in any glTF or OBJ viewer or to fracture once and load everywhere (object.mesh_file).
+// `fragsim fracture` writes the pieces a scene's object breaks into as a mesh file, to look at in
+// any glTF or OBJ viewer or to fracture once and load everywhere (object.mesh_file).
 
 #include <string>
 #include <vector>

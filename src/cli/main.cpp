@@ -1,5 +1,5 @@
-// fragsim: the command line. It parses options into a scene, runs, prints; every failure becomes
-// one line on stderr and a non-zero exit (2 for usage errors, 1 for failures while running).
+// The fragsim command line. It parses options into a scene, runs, prints; every failure becomes one
+// line on stderr and a non-zero exit (2 for usage errors, 1 for failures while running).
 
 #include <csignal>
 #include <exception>
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     std::cerr << "fragsim: unknown command '" << command << "'\n" << kUsage;
     return kUsageError;
   } catch (const Interrupted& e) {
-    // Unwound to here, every temporary file is gone: now die of the signal as if never caught.
+    // Unwound to here, every temporary file is gone, so die of the signal as if never caught.
     std::signal(e.signal(), SIG_DFL);
     std::raise(e.signal());
     return 128 + e.signal();
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
     std::cerr << "fragsim " << command << ": " << e.what() << '\n';
     return kUsageError;
   } catch (const InputError& e) {
-    // Bad input found only once the run has begun (a piece too light for ODE): still bad input.
+    // Bad input found only once the run has begun (a piece too light for ODE) is still bad input.
     std::cerr << "fragsim " << command << ": " << e.what() << '\n';
     return kUsageError;
   } catch (const std::exception& e) {

@@ -1,5 +1,5 @@
 #pragma once
-// `fragsim merge OUT SLICE...`: joins the slices that `fragsim sweep --shard K/N` or
+// `fragsim merge OUT SLICE...` joins the slices that `fragsim sweep --shard K/N` or
 // `fragsim suite --shard K/N` wrote (one per task of a job array) into OUT, the file the unsharded
 // command writes, byte for byte (experiments/shard.hpp).
 

@@ -22,7 +22,8 @@ namespace {
 namespace po = boost::program_options;
 namespace fs = std::filesystem;
 
-// The q-quantile of `v` by the nearest-rank rule (the median of an even count: the upper middle).
+// The q-quantile of `v` by the nearest-rank rule (for an even count the median is the upper
+// middle).
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
@@ -108,7 +109,7 @@ int cmd_play(const std::vector<std::string>& args) {
   }
 
   if (!p.options.count("bench-frames")) {
-    // Found now, not when the first flight ends and its recording fails.
+    // Found here, not when the first flight ends and its recording fails.
     if (const auto problem = record_path_problem(options.record, options.record_folder)) {
       throw UsageError((options.record.empty()
                             ? std::string("cannot record flights (--record FILE.csv): ")
@@ -118,7 +119,7 @@ int cmd_play(const std::vector<std::string>& args) {
   }
 
   try {
-    // Tab and 1-9 reach every strategy: each is validated here, so a bad one fails now.
+    // Tab and 1-9 reach every strategy, so each is validated here and a bad one fails at once.
     validate_strategy_settings(options.strategy, p.scene);
     for (const std::string& name : strategy_names()) validate_strategy_settings(name, p.scene);
   } catch (const InputError& e) {

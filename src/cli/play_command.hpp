@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim play`: fly the camera yourself (src/play). This file only parses the options, opens
-// the window or the benchmark's script, and prints each flight's numbers and replay command.
+// `fragsim play` lets you fly the camera yourself (src/play). This file only parses the options,
+// opens the window or the benchmark's script, and prints each flight's numbers and replay command.
 
 #include <string>
 #include <vector>

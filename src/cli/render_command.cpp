@@ -163,9 +163,8 @@ int cmd_render(const std::vector<std::string>& args) {
   FrameRenderer renderer(p.scene, style);
   std::vector<double> render_ms;
   std::vector<double> write_ms;
-  // Frames go one at a time (a long run has thousands, more than can wait as open temporary
-  // files), so a failure part way removes the frames this run wrote: none of a failed output
-  // remains.
+  // Frames go one at a time (a long run has thousands, more than can wait as open temporary files),
+  // so a failure part way removes the frames this run wrote, and none of a failed output remains.
   std::vector<std::string> written;
   try {
     for (const RecordedFrame& f : frames) {

@@ -21,11 +21,12 @@ namespace fragsim::cli {
 int cmd_render(const std::vector<std::string>& args);
 
 // The option parsers, each throwing a one-line UsageError naming the option.
-// "a:b:every", "a:b" or "a": steps a to b inclusive, every `every`-th; 0 <= a <= b <= step_count.
+// "a:b:every", "a:b" or "a" for steps a to b inclusive, every `every`-th;
+// 0 <= a <= b <= step_count.
 std::vector<int> parse_steps(const std::string& spec, int step_count);
 // "WIDTHxHEIGHT", each in [16, 8192].
 std::pair<int, int> parse_size(const std::string& spec);
-// Comma-separated: candidates, forces, central, cuts ("" or "none": no overlay); errors name
+// Comma-separated candidates, forces, central, cuts ("" or "none" for no overlay); errors name
 // `option`.
 FrameOverlays parse_overlays(const std::string& spec, const std::string& option = "--overlays");
 
@@ -49,7 +50,7 @@ class ObserverFanOut final : public RunObserver {
   void add(RunObserver* o) {
     if (o) observers_.push_back(o);
   }
-  // This, or null when nothing was added: what to hand to compare().
+  // What to hand to compare(), this or null when nothing was added.
   RunObserver* or_null() { return observers_.empty() ? nullptr : this; }
 
   void begin(const RunInfo& info, const StepSnapshot& initial) override {

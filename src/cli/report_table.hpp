@@ -1,6 +1,6 @@
 #pragma once
-// The comparison as the terminal shows it: a header line, one aligned table (a row per strategy,
-// units in the headers), a legend and the verdict on the thesis's goals.
+// The comparison as the terminal shows it, with a header line, one aligned table (a row per
+// strategy, units in the headers), a legend and the verdict on the thesis's goals.
 
 #include <ostream>
 #include <vector>

@@ -19,7 +19,7 @@ namespace po = boost::program_options;
 
 namespace {
 
-// `run --dump-control FILE`: the strategy alone (no reference run, no metrics output), recorded.
+// `run --dump-control FILE` records the strategy alone (no reference run, no metrics output).
 int dump_control(const cli::ParsedCommand& p, const std::string& strategy) {
   for (const char* other : {"csv", "trajectories", "report", "sheet", "bake"}) {
     if (p.options.count(other)) {

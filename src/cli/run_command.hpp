@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim run`: one strategy on a scene, compared with `none` as the deviation reference; or,
-// with --dump-control, the strategy alone with what it was given and applied each step recorded.
+// `fragsim run` runs one strategy on a scene, compared with `none` as the deviation reference, or,
+// with --dump-control, the strategy alone, recording what it was given and applied each step.
 
 #include <string>
 #include <vector>

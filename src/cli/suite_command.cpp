@@ -41,7 +41,7 @@ void print_rows(const std::vector<SuiteRow>& rows, std::ostream& out) {
   t.print(out);
 }
 
-// Fails early, as a usage error, when FILE cannot be written: a probe through the same
+// Fails early, as a usage error, when FILE cannot be written, by a probe through the same
 // temporary-file-and-rename path, removed again before the workers are forked.
 void check_out(const std::string& path, bool force) {
   if (path.empty()) throw UsageError("--out: empty file name");
@@ -57,7 +57,7 @@ void check_out(const std::string& path, bool force) {
   }
 }
 
-// --shard: the slice's runs alone, written after the slice line of the whole plan.
+// For --shard, the slice's runs alone, written after the slice line of the whole plan.
 int run_suite_slice(const std::map<std::string, std::string>& scenes,
                     const std::vector<SuiteRun>& runs, const std::vector<SuiteVariant>& variants,
                     const Shard& shard, int jobs, const std::string& out_path) {

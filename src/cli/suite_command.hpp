@@ -1,6 +1,7 @@
 #pragma once
-// `fragsim suite`: the fixed battery of experiments/suite.hpp (many scenes, cameras and seeds),
-// every strategy on every run; one table per camera mode, the recommendation, and a tidy CSV.
+// `fragsim suite` runs the fixed battery of experiments/suite.hpp (many scenes, cameras and seeds),
+// every strategy on every run, and prints one table per camera mode, the recommendation, a tidy
+// CSV.
 
 #include <cstddef>
 #include <ostream>

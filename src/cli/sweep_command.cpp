@@ -30,7 +30,7 @@ struct SweepCommandPlan {
   SweepPlan sweep;
   std::string out;
   int jobs = 1;
-  std::optional<Shard> shard;  // --shard K/N: only that slice of sweep.jobs
+  std::optional<Shard> shard;  // --shard K/N, only that slice of sweep.jobs
 };
 
 // SceneError messages for an override start with "--KEY: "; the caller names --vary instead.
@@ -39,7 +39,7 @@ std::string without_option_prefix(const std::string& message, const std::string&
   return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
 }
 
-// The rows' columns: the varied keys, the seed, then summary.csv's columns but its own seed (the
+// The rows' columns are the varied keys, the seed, then summary.csv's columns but its own seed (the
 // same number; a second `seed` column would make readers rename one).
 std::vector<std::string> sweep_columns(const SweepPlan& plan, std::size_t& seed_column) {
   std::vector<std::string> cols;
@@ -66,7 +66,7 @@ std::string join(const std::vector<std::string>& cells) {
   return s;
 }
 
-// ---- Parsing and validation: everything that can be wrong is found here, before any fork. ----
+// ---- Parsing and validation. Everything that can be wrong is found here, before any fork. ----
 
 SweepCommandPlan plan_sweep(const ParsedCommand& p) {
   SweepCommandPlan command;
@@ -146,7 +146,7 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
     }
   }
 
-  // The scene file's text, read once: every job's scene is parsed from it with its overrides.
+  // The scene file's text, read once, as every job's scene is parsed from it with its overrides.
   if (p.options.count("scene")) {
     plan.origin = p.options["scene"].as<std::string>();
     try {
@@ -183,7 +183,7 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
     }
   }
   // Then every combination, for the rules across keys (near < far, ...) and strategy parameters.
-  // (The seed cannot make a scene invalid: any whole number is a seed.)
+  // (The seed cannot make a scene invalid, since any whole number is a seed.)
   for (const auto& c : combos) {
     try {
       const Scene scene =
@@ -198,13 +198,13 @@ SweepCommandPlan plan_sweep(const ParsedCommand& p) {
   return command;
 }
 
-// The CSV: a header, then per job (in plan order) one row per strategy.
+// The CSV, with a header, then per job (in plan order) one row per strategy.
 std::string sweep_csv(const SweepPlan& plan, const std::vector<std::vector<Evaluation>>& results) {
   std::size_t seed_column = 0;
   std::string csv = join(sweep_columns(plan, seed_column)) + "\n";
   for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
     const SweepJob& job = plan.jobs[j];
-    // Parsed again here for the rows' scene-derived cells (the z-fighting flag): it is the
+    // Parsed again here for the rows' scene-derived cells (the z-fighting flag), because it is the
     // scene the worker ran.
     const Scene scene =
         parse_scene(plan.scene_text, plan.origin, sweep_overrides(plan, job.value_index, job.seed));
@@ -305,7 +305,7 @@ int cmd_sweep(const std::vector<std::string>& args) {
     slice_head = plan_id;
   }
   const SweepPlan& plan = command.shard ? sliced : command.sweep;
-  // Fails early, as a usage error, when the file cannot be written: a probe through the same
+  // Fails early, as a usage error, when the file cannot be written, by a probe through the same
   // temporary-file-and-rename path, removed again before the workers are forked.
   try {
     const AtomicFile probe(command.out);

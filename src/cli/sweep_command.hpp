@@ -1,6 +1,6 @@
 #pragma once
-// `fragsim sweep`: scene keys varied over values and seeds, each combination compared in a worker
-// process, all rows merged into one CSV in a fixed order.
+// `fragsim sweep` varies scene keys over values and seeds, compares each combination in a worker
+// process, and merges all rows into one CSV in a fixed order.
 
 #include <ostream>
 #include <string>
@@ -14,8 +14,8 @@ namespace fragsim::cli {
 // job fails and Interrupted on a stop signal.
 int cmd_sweep(const std::vector<std::string>& args);
 
-// The per-value tables `cmd_sweep` prints when one key is varied, from a sweep CSV alone (a
-// merged one: `fragsim merge`); nothing when the CSV varies more than one key.
+// The per-value tables `cmd_sweep` prints when one key is varied, from a sweep CSV alone (a merged
+// one from `fragsim merge`); nothing when the CSV varies more than one key.
 void print_sweep_tables(const std::string& csv, std::ostream& out);
 
 }  // namespace fragsim::cli

@@ -20,7 +20,7 @@ class Table {
   std::vector<std::vector<std::string>> rows_;
 };
 
-// io/number_format.hpp's fixed_text: the text the comparison table and the HTML page print.
+// io/number_format.hpp's fixed_text, the text the comparison table and the HTML page print.
 std::string fixed(double v, int decimals);
 
 }  // namespace fragsim::cli

@@ -37,8 +37,8 @@ struct Qhull {
   }
 };
 
-// A merged facet's vertices come as a set, not a loop: sorted by angle about the facet's centre,
-// counter-clockwise seen along the outward normal.
+// A merged facet's vertices come as a set, not a loop, so they are sorted by angle about the
+// facet's centre, counter-clockwise seen along the outward normal.
 std::vector<int> loop_about(const std::vector<Eigen::Vector3d>& pts, std::vector<int> ids,
                             const Eigen::Vector3d& normal) {
   Eigen::Vector3d c = Eigen::Vector3d::Zero();
@@ -46,9 +46,9 @@ std::vector<int> loop_about(const std::vector<Eigen::Vector3d>& pts, std::vector
   c /= static_cast<double>(ids.size());
   const Eigen::Vector3d u = (pts[ids.front()] - c).normalized();
   const Eigen::Vector3d w = normal.cross(u);
-  // Angles kept beside the ids, not in a table over all points: that table, one per facet, made a
-  // hull of 500,000 vertices quadratic. Sorted by angle alone, as the table was, so the order
-  // (ties included) is the one it gave.
+  // Angles are kept beside the ids, not in a table over all points, as one such table per facet
+  // makes a hull of 500,000 vertices quadratic. Sorted by angle alone, as that table would be, so
+  // the order (ties included) is the one it would give.
   std::vector<std::pair<double, int>> by_angle;
   by_angle.reserve(ids.size());
   for (int i : ids) by_angle.emplace_back(std::atan2((pts[i] - c).dot(w), (pts[i] - c).dot(u)), i);
@@ -109,7 +109,7 @@ std::shared_ptr<ConvexShape> shape_of_polyhedron(const std::vector<Eigen::Vector
     s->half_extents_m = s->half_extents_m.cwiseMax(s->vertices_m.back().cwiseAbs());
   }
   for (const auto& f : faces) {
-    // Newell's normal: the polygon's area vector, exact for a planar loop and the best fit of a
+    // Newell's normal is the polygon's area vector, exact for a planar loop and the best fit of a
     // nearly planar one.
     Eigen::Vector3d n = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < f.size(); ++i) {
@@ -151,7 +151,7 @@ Polyhedron qhull_of(const std::vector<Eigen::Vector3d>& points_m) {
   NullStream sink;
   Qhull q(sink.f);
   qhT* qh = &q.qh;
-  // Default options: coplanar facets merged (C-0, Qx), so a cube has six square faces.
+  // Default options merge coplanar facets (C-0, Qx), so a cube has six square faces.
   char options[] = "qhull";
   const int status = qh_new_qhull(qh, 3, static_cast<int>(points_m.size()), coords.data(), False,
                                   options, nullptr, sink.f);
@@ -178,10 +178,10 @@ Polyhedron qhull_of(const std::vector<Eigen::Vector3d>& points_m) {
   return out;
 }
 
-// At most `n` of the vertices, well spread over the hull: first the support point along each of
-// n directions of a Fibonacci lattice on the sphere (ties to the first vertex), then, while
-// fewer than n (a hull with sharp corners gives many directions the same vertex), the vertex
-// farthest from those chosen.
+// At most `n` of the vertices, well spread over the hull: first the support point along each of n
+// directions of a Fibonacci lattice on the sphere (ties to the first vertex), then, while fewer
+// than n (a hull with sharp corners gives many directions the same vertex), the vertex farthest
+// from those chosen.
 std::vector<Eigen::Vector3d> spread_subset(const std::vector<Eigen::Vector3d>& v, int n) {
   const double golden_angle = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
   std::vector<char> chosen(v.size(), 0);

@@ -26,8 +26,8 @@ std::string shown_uri(std::string_view uri) {
   return shown(uri, 80);
 }
 
-// Extensions that a file may require and fragsim still read right: they change how a surface
-// looks or what else the file holds, never a mesh's positions. Any other required extension
+// Extensions that a file may require and fragsim still reads right, because they change how a
+// surface looks or what else the file holds, never a mesh's positions. Any other required extension
 // (compression, quantization, instancing, ones not yet written) is refused.
 bool extension_keeps_geometry(const std::string& name) {
   static const std::array<const char*, 6> kKept = {"KHR_texture_transform", "KHR_texture_basisu",
@@ -52,8 +52,8 @@ std::string unsupported_extension(const std::string& name) {
          "without it";
 }
 
-// The uri decoded as RFC 3986 says, or why it cannot be: a '%' not followed by two hex digits, or
-// one that decodes to a NUL byte (no file name holds one).
+// The uri decoded as RFC 3986 says, or why it cannot be (a '%' not followed by two hex digits, or
+// one that decodes to a NUL byte, which no file name holds).
 bool percent_decode(const std::string& uri, std::string& out, std::string& why) {
   const auto hex = [](char c) -> int {
     if (c >= '0' && c <= '9') return c - '0';
@@ -87,7 +87,7 @@ bool percent_decode(const std::string& uri, std::string& out, std::string& why) 
   return true;
 }
 
-// tinygltf's decoding of the same uri (its dlib::urldecode): '+' becomes a space.
+// tinygltf's decoding of the same uri (its dlib::urldecode), where '+' becomes a space.
 std::string tinygltf_decoded(const std::string& uri, const std::string& spec) {
   std::string out;
   for (std::size_t i = 0, j = 0; i < uri.size(); ++i, ++j) {
@@ -107,7 +107,7 @@ bool is_data_uri(const std::string& uri) {
 
 // What the callbacks need: the folder uris resolve in, the names tinygltf will ask for mapped to
 // the files the uris name, and the first rule broken (tinygltf turns a refused file into "not
-// found"; the rule is the message).
+// found", so the rule is the message).
 struct Access {
   fs::path folder;     // canonical
   std::string prefix;  // the folder as tinygltf joins it to a uri, with its '/'
@@ -140,7 +140,7 @@ std::string checked_file(Access& a, const std::string& joined) {
                   " (uris are resolved only inside it)");
   }
   const fs::file_status st = fs::status(real, ec);
-  if (ec || !fs::exists(st)) return "";  // tinygltf: "File not found"
+  if (ec || !fs::exists(st)) return "";  // tinygltf then says "File not found"
   if (fs::is_fifo(st)) return refuse("names a FIFO, not a regular file");
   if (fs::is_directory(st)) return refuse("names a folder, not a regular file");
   if (!fs::is_regular_file(st)) return refuse("is not a regular file");
@@ -151,7 +151,7 @@ bool file_exists(const std::string& path, void* user) {
   return !checked_file(*static_cast<Access*>(user), path).empty();
 }
 
-// No expansion: tinygltf's own runs wordexp, which would read "~" or "$HOME" in a uri.
+// No expansion, because tinygltf's own runs wordexp, which would read "~" or "$HOME" in a uri.
 std::string expand_nothing(const std::string& path, void*) {
   return path;
 }
@@ -191,7 +191,7 @@ bool read_file(std::vector<unsigned char>* out, std::string* err, const std::str
   return true;
 }
 
-// Images do not shape a piece: none is decoded.
+// Images do not shape a piece, so none is decoded.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                 const unsigned char*, int, void*) {
   return true;
@@ -217,8 +217,8 @@ std::string json_text(const std::string& bytes, bool binary) {
 }
 
 // The rules that need the file's own text before tinygltf reads it: required extensions (a file
-// that requires meshopt would otherwise fail later as a missing buffer, without the reason),
-// data: uris' sizes (refused before they are decoded) and each uri's decoding.
+// that requires meshopt would otherwise fail later as a missing buffer, without the reason), data:
+// uris' sizes (refused before they are decoded) and each uri's decoding.
 void check_json(const std::string& json, const std::string& path, Access& a) {
   const nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
   if (doc.is_discarded() || !doc.is_object()) return;
@@ -283,9 +283,9 @@ tinygltf::Model load_gltf(const std::string& bytes, const std::string& path, boo
   std::string err;
   std::string warn;
   bool ok = false;
-  // tinygltf reports most bad input in err, but not all: a .glb buffer of byteLength 0 beside a
-  // BIN chunk made it index an empty vector with at() (found by gltf_mesh_fuzz in CI), and a
-  // library's exception must reach the user as the same one line as its other refusals.
+  // tinygltf reports most bad input in err, but not all. A .glb buffer of byteLength 0 beside a BIN
+  // chunk makes it index an empty vector with at() (found by gltf_mesh_fuzz in CI), and a library's
+  // exception must reach the user as the same one line as its other refusals.
   try {
     ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
                                               reinterpret_cast<const unsigned char*>(bytes.data()),

@@ -14,8 +14,8 @@ namespace fragsim {
 namespace {
 
 std::vector<Piece> grid_pieces(const DebrisDef& def) {
-  // The cubes exactly as the explosion has always made them: the same expressions in the same
-  // order, so a grid scene's results do not change by a bit.
+  // The cubes come from the same expressions in the same order as the pinned grid results were made
+  // with, so a grid scene's results do not change by a bit.
   const int n = def.splits;
   const double cell_m = def.size_m / n;
   const double half_m = 0.5 * cell_m * (1.0 - def.gap);
@@ -38,9 +38,9 @@ std::vector<Piece> grid_pieces(const DebrisDef& def) {
   return out;
 }
 
-// Uniform numbers that are the same with every standard library: std::mt19937_64 is specified bit
-// for bit, std::uniform_real_distribution is not (the same rule as sim/random.hpp, which debris,
-// below sim, cannot include).
+// Uniform numbers that are the same with every standard library, because std::mt19937_64 is
+// specified bit for bit and std::uniform_real_distribution is not (the same rule as sim/random.hpp,
+// which debris, below sim, cannot include).
 class SeedPoints {
  public:
   // The seed is mixed (splitmix64) so the cells' stream is not the explosion's, which
@@ -60,7 +60,7 @@ class SeedPoints {
 
 // `pieces` points strictly inside the cube of half edge h about the origin, drawn from a density
 // that is uniform within r_core of the blast point b and falls off as (r / r_core)^(-3 cluster)
-// beyond: cells shrink toward the blast, but no cell is smaller than the core's, where a pure power
+// beyond. Cells shrink toward the blast, but no cell is smaller than the core's, where a pure power
 // law would put a cell of 1e-15 m^3 at b. r_core is half the mean spacing of uniform cells,
 // size / (2 pieces^(1/3)). A point is drawn in the ball about b that holds the cube (radius R, in a
 // uniform direction, at the distance whose share of the ball's mass is a uniform number) and kept
@@ -77,7 +77,7 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
   }
   const double r_core = 0.5 * def.size_m / std::cbrt(static_cast<double>(def.pieces));
   const double a3 = 3.0 * (1.0 - def.cluster);
-  const double x_max = r_max / r_core;  // > 1: r_max is at least the half diagonal
+  const double x_max = r_max / r_core;  // > 1, because r_max is at least the half diagonal
   const double mass_max = 1.0 / 3.0 + (std::pow(x_max, a3) - 1.0) / a3;
   std::vector<Eigen::Vector3d> out;
   out.reserve(static_cast<std::size_t>(def.pieces));
@@ -85,7 +85,7 @@ std::vector<Eigen::Vector3d> seed_points(const DebrisDef& def) {
   const long long max_draws = 10000LL * def.pieces + 100000;
   for (long long draws = 0; static_cast<int>(out.size()) < def.pieces; ++draws) {
     if (draws > max_draws) {
-      // Bad input (legal keys that together cannot be made), so InputError: one line, status 2.
+      // Bad input (legal keys that together cannot be made), so InputError, one line, status 2.
       throw InputError(
           "voronoi: the blast point is too far from the object for its seed points to land in "
           "it (explosion.offset_m)");
@@ -147,7 +147,7 @@ std::vector<Piece> voronoi_pieces(const DebrisDef& def) {
     } while (loop.inc());
   }
   for (std::size_t i = 0; i < done.size(); ++i) {
-    // voro++ works to absolute tolerances: cells of a few micrometres can come out empty.
+    // voro++ works to absolute tolerances, so cells of a few micrometres can come out empty.
     if (!done[i]) {
       throw InputError("voronoi: voro++ made no cell " + std::to_string(i + 1) +
                        " (cells too small for it: a larger object.size_m or fewer object.pieces)");

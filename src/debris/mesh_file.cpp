@@ -49,9 +49,9 @@ std::vector<RawPiece> raw_obj(const std::string& text, const std::string& path) 
   std::vector<tinyobj::material_t> materials;
   std::string warn;
   std::string err;
-  // Materials do not matter to a piece's shape: no material reader, so mtllib lines are ignored.
+  // Materials do not matter to a piece's shape, so no material reader; mtllib lines are ignored.
   bool ok = false;
-  try {  // as for glTF below: a library's exception is a refusal, not a crash
+  try {  // as for glTF below, a library's exception is a refusal, not a crash
     ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, false);
   } catch (const std::exception& e) {
     throw InputError(path + ": not a readable OBJ file: the OBJ reader failed (" +
@@ -127,8 +127,8 @@ void positions_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
       model.buffers[static_cast<std::size_t>(view.buffer)].data;
   const std::size_t stride = view.byteStride ? view.byteStride : 12;
   if (stride < 12) fail("POSITION's byteStride is below the 12 bytes of a float VEC3");
-  // Every bound in subtractions of checked sizes: a file's counts and offsets are 64-bit and a
-  // product like stride * count would wrap (a count of 1.5e18 passed the old sum check and read
+  // Every bound is in subtractions of checked sizes, as a file's counts and offsets are 64-bit and
+  // a product like stride * count would wrap (a count of 1.5e18 would pass a sum check and read
   // past the buffer).
   const bool view_fits =
       view.byteOffset <= data.size() && view.byteLength <= data.size() - view.byteOffset;
@@ -158,7 +158,7 @@ std::vector<RawPiece> raw_gltf(const std::string& bytes, const std::string& path
             : 0;
     roots = model.scenes[static_cast<std::size_t>(s)].nodes;
   } else {
-    // No scene: every node that is no other's child is a root.
+    // With no scene, every node that is no other's child is a root.
     std::vector<bool> child(model.nodes.size(), false);
     for (const auto& n : model.nodes) {
       for (int c : n.children) {
@@ -259,8 +259,8 @@ std::vector<Piece> parse_pieces(const std::string& bytes, const std::string& pat
   int reduced = 0;
   double largest_change = 0.0;  // relative volume change of a simplified hull
   for (std::size_t i = 0; i < raw.size(); ++i) {
-    // Beyond the scene's own reach (object.distance_m <= 1e6 m) a hull loses its small features
-    // to rounding: a fuzzed tetrahedron at 1e31 m had volume 2e77 m^3 read, -8e74 written back.
+    // Beyond the scene's own reach (object.distance_m <= 1e6 m) a hull loses its small features to
+    // rounding; a fuzzed tetrahedron at 1e31 m reads with volume 2e77 m^3 and writes back -8e74.
     for (const Eigen::Vector3d& v : raw[i].points_m) {
       if (v.allFinite() && v.cwiseAbs().maxCoeff() > kMaxMeshCoordinate_m) {
         throw InputError(path + ": piece " + std::to_string(i + 1) + " ('" + raw[i].name +
@@ -355,8 +355,8 @@ std::string pieces_glb(const std::vector<Piece>& pieces) {
     const Piece& piece = pieces[i];
     piece_polyhedron(piece, v, faces);
     const std::string name = "piece_" + std::to_string(i + 1);
-    // Positions about the centre of mass, which the node carries in double precision: the 32-bit
-    // floats then only round the piece's own size.
+    // Positions are about the centre of mass, which the node carries in double precision, so the
+    // 32-bit floats only round the piece's own size.
     tinygltf::Accessor pos;
     pos.bufferView = static_cast<int>(model.bufferViews.size());
     pos.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;

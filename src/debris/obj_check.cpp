@@ -31,7 +31,7 @@ std::vector<std::string_view> tokens_of(std::string_view line) {
   return out;
 }
 
-// The lines as tinyobjloader reads them: ended by "\n", "\r\n" or a lone "\r".
+// The lines as tinyobjloader reads them, ended by "\n", "\r\n" or a lone "\r".
 std::vector<std::string_view> lines_of(std::string_view text) {
   std::vector<std::string_view> out;
   std::size_t start = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// What the object breaks into, before the blast: each piece's place and shape. The grid of equal
+// What the object breaks into, before the blast, as each piece's place and shape. The grid of equal
 // cubes, Voronoi cells of the object's box and pieces read from a mesh file all end as a list of
 // these, which the explosion gives velocities and the world turns into bodies.
 
@@ -13,7 +13,7 @@ namespace fragsim {
 
 struct Piece {
   // Its centre of mass relative to the object's centre (object.centre_m), and its body axes as
-  // columns: the shape's body frame placed in the object's frame.
+  // columns, which place the shape's body frame in the object's frame.
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
   // A box of these half extents when `shape` is null (the grid's cubes stay ODE boxes); else the

@@ -40,7 +40,7 @@ void AccuracyProbe::begin(const RunInfo& info, const StepSnapshot& initial) {
 
 void AccuracyProbe::observe(const StepSnapshot& snap) {
   // A contact found in the step that led here acted during that step, so the position one step
-  // earlier is still pure flight: that is where the prediction is checked.
+  // earlier is still pure flight, and that is where the prediction is checked.
   const double tau_s = (snap.step - 1) * dt_s_;
   auto check = [&](std::size_t i) {
     if (first_contact_s_[i] != std::numeric_limits<double>::infinity()) return;

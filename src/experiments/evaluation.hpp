@@ -1,7 +1,7 @@
 #pragma once
 // Runs strategies on a scene with the metric observers attached and gathers their summaries and
-// per-step series. A comparison runs `none` first: its trajectories are the reference every other
-// strategy's deviation is measured against.
+// per-step series. A comparison runs `none` first, because its trajectories are the reference every
+// other strategy's deviation is measured against.
 
 #include <optional>
 #include <string>
@@ -18,7 +18,7 @@ class TrajectoryRecord;
 class ControlDump;
 
 struct EvaluationOptions {
-  const TrajectoryRecord* reference = nullptr;  // the `none` run, for deviation; null: no deviation
+  const TrajectoryRecord* reference = nullptr;  // the `none` run for deviation, or null for none
   TrajectoryRecord* record = nullptr;           // filled with this run's trajectories if set
   bool occlusion = true;                        // rasterise the screen every step
   std::vector<RunObserver*> extra;              // more observers (a trajectory writer, ...)
@@ -49,17 +49,17 @@ Evaluation evaluate(const Scene& scene, const std::string& strategy,
 std::vector<Evaluation> compare(const Scene& scene, const std::vector<std::string>& strategies,
                                 bool occlusion = true, RunObserver* extra = nullptr, int jobs = 1);
 
-// The thesis's goals, in order: no near-plane intersections, camera hits or vanished fragments
-// (each one a failure; the sum is compared), then least mean deviation, then most near misses. The
-// best of the runs other than `none`; nullopt if none.
+// The best of the runs other than `none` by the thesis's goals, in order: no near-plane
+// intersections, camera hits or vanished fragments (each one a failure; the sum is compared), then
+// least mean deviation, then most near misses. nullopt if there is none.
 std::optional<std::size_t> best_for_thesis_goals(const std::vector<Evaluation>& runs);
 
-// The fragments that failed the thesis's goals in a run: cut by the near plane, hitting the
-// camera's body, or vanishing on screen (fade). A fragment that vanishes fails them as one that
-// is cut does: the thesis wants debris to leave the picture, not to disappear from it.
+// The fragments that failed the thesis's goals in a run, cut by the near plane, hitting the
+// camera's body, or vanishing on screen (fade). A fragment that vanishes fails them as one that is
+// cut does, as the thesis wants debris to leave the picture, not to disappear from it.
 int thesis_goal_failures(const RunSummary& s);
 
-// The z-fighting flag: the depth step at the reference distance exceeds 1e-3 of that distance.
+// The z-fighting flag, set when the depth step at the reference distance exceeds 1e-3 of it.
 bool z_fighting(const RunSummary& summary, double ref_distance_m);
 
 }  // namespace fragsim

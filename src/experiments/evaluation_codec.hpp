@@ -13,8 +13,8 @@ std::string encode_evaluation(const Evaluation& e);
 // Throws std::runtime_error on truncated or malformed bytes.
 Evaluation decode_evaluation(const std::string& bytes);
 
-// Several, length-prefixed: one worker task's evaluations (a sweep job's strategies, a suite
-// run's variants). Throws std::runtime_error like decode_evaluation.
+// Several evaluations, length-prefixed, as one worker task holds them (a sweep job's strategies, a
+// suite run's variants). Throws std::runtime_error like decode_evaluation.
 std::string encode_evaluations(const std::vector<Evaluation>& evaluations);
 std::vector<Evaluation> decode_evaluations(const std::string& bytes);
 

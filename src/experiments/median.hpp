@@ -1,6 +1,6 @@
 #pragma once
-// The median of a sample, as every timing figure of the benchmarks and reports is given: the
-// middle value, or the mean of the two middle ones. 0 for an empty sample.
+// The median of a sample, as every timing figure of the benchmarks and reports is given, which is
+// the middle value, or the mean of the two middle ones. 0 for an empty sample.
 
 #include <algorithm>
 #include <cstddef>

@@ -18,7 +18,7 @@
 namespace fragsim {
 namespace {
 
-// Frames on a worker's pipe: task index, status (0 ok, 1 the task threw), length, bytes.
+// Frames on a worker's pipe hold the task index, status (0 ok, 1 the task threw), length and bytes.
 struct FrameHeader {
   std::uint64_t task;
   std::uint64_t status;
@@ -32,8 +32,8 @@ extern "C" void note_stop_signal(int signo) {
   g_stop_signal = signo;
 }
 
-// While workers run, the stop signals only set a flag, and are blocked except inside ppoll: a
-// signal then always interrupts the wait (no window between checking the flag and waiting).
+// While workers run, the stop signals only set a flag, and are blocked except inside ppoll, so a
+// signal always interrupts the wait (no window between checking the flag and waiting).
 class StopSignals {
  public:
   StopSignals() {
@@ -72,7 +72,7 @@ class StopSignals {
 
   const sigset_t& wait_mask() const { return entry_mask_; }
 
-  // The stop signal caught or pending, taking a pending one (0: none).
+  // The stop signal caught or pending, taking a pending one (0 for none).
   int take() const {
     if (g_stop_signal != 0) return g_stop_signal;
     const timespec zero{0, 0};
@@ -104,7 +104,7 @@ bool write_all(int fd, const void* data, std::size_t n) {
   return true;
 }
 
-// Never returns: the parent's objects in this copy of the process must not be destroyed twice.
+// Never returns, as the parent's objects in this copy of the process must not be destroyed twice.
 [[noreturn]] void worker_main(int fd, std::size_t first, std::size_t stride, std::size_t count,
                               const std::function<std::string(std::size_t)>& task) {
   for (std::size_t i = first; i < count; i += stride) {
@@ -131,12 +131,12 @@ struct Worker {
   pid_t pid = -1;
   int fd = -1;
   std::string buffer;    // bytes read, not yet a whole frame
-  std::size_t next = 0;  // the task it runs now
+  std::size_t next = 0;  // the task it is running
   bool running = false;  // not yet reaped
 };
 
-// Whatever ends the run (a result, a failure, an exception from a callback), no worker outlives
-// it: the rest are killed (they hold no file to clean up) and reaped.
+// Whatever ends the run (a result, a failure, an exception from a callback), no worker outlives it.
+// The rest are killed (they hold no file to clean up) and reaped.
 class WorkerSet {
  public:
   ~WorkerSet() { stop(); }
@@ -276,7 +276,7 @@ ProcessRunOutcome run_processes(std::size_t count,
   std::size_t done = 0;
   std::vector<pollfd> polls;
   std::vector<Worker*> polled;
-  // One event at a time, then the loop's checks: a failure, a cancellation or a signal ends it.
+  // One event at a time, then the loop's checks; a failure, a cancellation or a signal ends it.
   while (outcome.status == RunStatus::kCompleted) {
     if (const int signo = signals.take()) {
       outcome.status = RunStatus::kInterrupted;
@@ -311,7 +311,7 @@ ProcessRunOutcome run_processes(std::size_t count,
         fail(std::string("cannot read from a worker process: ") + std::strerror(errno));
         break;
       }
-      if (n == 0) {  // the worker closed its end: finished or died
+      if (n == 0) {  // the worker closed its end, finished or dead
         int status = 0;
         while (::waitpid(w.pid, &status, 0) < 0 && errno == EINTR) {
         }
@@ -319,7 +319,7 @@ ProcessRunOutcome run_processes(std::size_t count,
         ::close(w.fd);
         w.fd = -1;
         if (WIFEXITED(status) && WEXITSTATUS(status) == 0 && w.next >= count) continue;
-        // Workers killed by the same Ctrl-C as this process are no failure: the run was
+        // Workers killed by the same Ctrl-C as this process are no failure, because the run is
         // interrupted (the process group's signal is already pending here).
         if (signals.take() != 0) break;
         const std::string how = "the worker process " + worker_exit_text(status);
@@ -328,7 +328,7 @@ ProcessRunOutcome run_processes(std::size_t count,
         break;
       }
       w.buffer.append(chunk, static_cast<std::size_t>(n));
-      // A cancellation from on_done leaves the rest unread: no result after it.
+      // A cancellation from on_done leaves the rest unread, so no result comes after it.
       while (w.buffer.size() >= sizeof(FrameHeader) && outcome.status == RunStatus::kCompleted &&
              !cancelled(options)) {
         FrameHeader h;
@@ -350,7 +350,7 @@ ProcessRunOutcome run_processes(std::size_t count,
     }
   }
   set.stop();
-  // A stop signal that came with the last result still wins: the caller must not go on.
+  // A stop signal that came with the last result still wins, because the caller must not go on.
   if (outcome.status != RunStatus::kInterrupted) {
     if (const int signo = signals.take()) {
       outcome.status = RunStatus::kInterrupted;

@@ -118,7 +118,7 @@ Shard parse_shard(const std::string& text) {
 }
 
 JobRange shard_range(std::size_t jobs, const Shard& shard) {
-  // floor(jobs k / N) without the product: jobs = q N + r gives q k + floor(r k / N), and
+  // floor(jobs k / N) without the product. jobs = q N + r gives q k + floor(r k / N), and
   // r k < N^2 <= 1e12 fits 64 bits whatever the number of jobs.
   const std::size_t q = jobs / shard.count, r = jobs % shard.count;
   const auto at = [&](std::size_t k) { return q * k + r * k / shard.count; };

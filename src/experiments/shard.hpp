@@ -1,14 +1,8 @@
 #pragma once
 // Slices of a plan (`--shard K/N` of `fragsim sweep` and `fragsim suite`) and their merge
-// (`fragsim merge`): a plan of M jobs in its fixed order is cut into N contiguous slices, slice K
+// (`fragsim merge`). A plan of M jobs in its fixed order is cut into N contiguous slices, slice K
 // holding jobs [K M / N, (K + 1) M / N), so a job array on a cluster runs one slice per task and
 // the slices' rows, joined in K order, are the unsharded file's rows in its order.
-//
-// A slice file is the unsharded CSV of its jobs (header and rows) after one line of its own,
-//   # fragsim slice: command=sweep shard=K/N plan=<16 hex digits> jobs=B-E/M rows=R
-// with the plan's fingerprint (FNV-1a 64 of everything that decides the rows: scene text, keys,
-// values, seeds, strategies, options, columns). merge_slices drops those lines, so the merged file
-// is byte for byte the file the unsharded command writes, and refuses slices that cannot make it.
 
 #include <cstddef>
 #include <cstdint>
@@ -45,7 +39,7 @@ JobRange shard_range(std::size_t jobs, const Shard& shard);
 // FNV-1a 64 of the bytes, as 16 lower-case hex digits.
 std::string plan_fingerprint(const std::string& plan_text);
 
-// Builds a plan's text for plan_fingerprint: each part length-prefixed, so no two different lists
+// Builds a plan's text for plan_fingerprint, each part length-prefixed, so no two different lists
 // of parts give the same text.
 class PlanText {
  public:
@@ -71,16 +65,17 @@ struct SliceHeader {
 std::string slice_line(const std::string& command, const Shard& shard, const std::string& plan,
                        std::size_t total_jobs, const std::string& csv);
 
-// A slice file given to merge: its name (for messages) and its bytes.
+// A slice file given to merge, with its name (for messages) and its bytes.
 struct SliceFile {
   std::string name;
   std::string bytes;
 };
 
-// The merged CSV: the column header once, then every slice's rows in K order. Throws ShardError,
-// one line naming the file (and line) at fault: no or a malformed slice line, slices of different
-// commands, plans or numbers of slices, a slice given twice, slices missing, a column header or a
-// row count that disagrees with the slice line. `command`, if given, gets the slices' command.
+// The merged CSV, the column header once, then every slice's rows in K order. Throws ShardError,
+// one line naming the file (and line) at fault, for: no or a malformed slice line, slices of
+// different commands, plans or numbers of slices, a slice given twice, slices missing, a column
+// header or a row count that disagrees with the slice line. `command`, if given, gets the slices'
+// command.
 std::string merge_slices(const std::vector<SliceFile>& files, std::string* command = nullptr);
 
 }  // namespace fragsim

@@ -48,8 +48,8 @@ Scene variant_scene(const std::string& text, const SuiteRun& run, const SuiteVar
 }  // namespace
 
 const std::vector<SuiteSceneSpec>& suite_scene_specs() {
-  // Distances and speeds chosen so that `none` keeps the camera clean in well under half of the
-  // runs (measured: 16% of the path runs at 9 seeds) while each scene keeps its character: the
+  // Distances and speeds are chosen so that `none` keeps the camera clean in well under half of the
+  // runs (16% of the path runs at 9 seeds, measured) while each scene keeps its character, with the
   // scene's own distance and a closer one, its own aim speed and a faster one.
   static const std::vector<SuiteSceneSpec> specs{
       {"front", {"6", "10"}, {"10", "15"}},   {"thesis125", {"4", "7"}, {"3", "6"}},
@@ -69,8 +69,8 @@ const std::vector<SuiteMode>& suite_modes() {
       {"path", {{"camera.mode", "path"}}},
       {"player", {{"camera.mode", "player"}}},
       {"player-instant", {{"camera.mode", "player"}, {"camera.player_accel_mps2", "inf"}}},
-      // A mouse flick's turn rate (eight times the scene default): edge-min must not rely on
-      // a slow view.
+      // A mouse flick's turn rate (eight times the scene default), because edge-min must not rely
+      // on a slow view.
       {"player-flick", {{"camera.mode", "player"}, {"camera.turn_rate_degps", "720"}}},
   };
   return modes;
@@ -201,7 +201,7 @@ std::vector<SuiteOutcome> run_suite_once(const std::string& scene_text, const Su
   std::vector<SuiteOutcome> out;
   for (const SuiteVariant& v : variants) {
     if (v.strategy == "none" && v.overrides.empty()) {
-      // The reference itself: its deviation from itself is zero.
+      // The reference itself, whose deviation from itself is zero.
       out.push_back(outcome_of(none.summary, run_index, v.label));
       continue;
     }
@@ -394,7 +394,7 @@ SuiteTable read_suite_csv(const std::string& csv) {
       throw std::runtime_error("line " + std::to_string(number) + ": unreadable number");
     }
     o.variant = cells[6];
-    // A run's rows are consecutive: a new run starts where the run's fields change.
+    // A run's rows are consecutive, so a new run starts where the run's fields change.
     const bool same = !t.runs.empty() && t.runs.back().scene == r.scene &&
                       t.runs.back().distance_m == r.distance_m && t.runs.back().aim == r.aim &&
                       t.runs.back().toward_camera_mps == r.toward_camera_mps &&

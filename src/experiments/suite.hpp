@@ -1,9 +1,9 @@
 #pragma once
-// The suite (`fragsim suite`): one verdict over many cameras. A fixed battery of runs (the shipped
-// scenes at several explosion distances, aims and speeds, times seeds, times camera modes), every
-// strategy on every run (`none` first, the deviation reference; `edge-min` once per camera
-// model), aggregated per camera mode, and a recommendation. The battery is defined here, in code,
-// so its results stay comparable between versions; it names scene keys only, so it needs no
+// The suite (`fragsim suite`) gives one verdict over many cameras. A fixed battery of runs (the
+// shipped scenes at several explosion distances, aims and speeds, times seeds, times camera modes)
+// runs every strategy on every run (`none` first, the deviation reference; `edge-min` once per
+// camera model), aggregated per camera mode, with a recommendation. The battery is defined here, in
+// code, so its results stay comparable between versions; it names scene keys only, so it needs no
 // change when the player camera and the camera models change what those keys do.
 
 #include <cstddef>
@@ -26,7 +26,7 @@ class SuiteError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// One shipped scene (data/scenes/<scene>.ini) and the values it runs at: every distance x aim x
+// One shipped scene (data/scenes/<scene>.ini) and the values it runs at, every distance x aim x
 // speed. Values are scene-file text, written into the CSV as they are.
 struct SuiteSceneSpec {
   std::string scene;
@@ -38,7 +38,7 @@ struct SuiteSceneSpec {
 const std::vector<SuiteSceneSpec>& suite_scene_specs();
 const std::vector<std::string>& suite_aims();
 
-// A camera mode of the battery: a name for the tables and the scene keys that make it.
+// A camera mode of the battery, with a name for the tables and the scene keys that make it.
 struct SuiteMode {
   std::string name;
   std::vector<SceneOverride> overrides;
@@ -51,8 +51,8 @@ const std::vector<SuiteMode>& suite_modes();
 // Whether a mode's runs count as "player runs" for the recommendation.
 bool is_player_mode(const std::string& mode);
 
-// A row of the tables: a strategy, with the scene keys that select its variant (edge-min's
-// camera model). `none` is always first.
+// A row of the tables, a strategy with the scene keys that select its variant (edge-min's camera
+// model). `none` is always first.
 struct SuiteVariant {
   std::string label;  // "edge", "edge-min/reachable"
   std::string strategy;
@@ -77,10 +77,10 @@ struct SuiteRun {
 };
 
 struct SuiteSelection {
-  std::vector<std::string> scenes;  // empty: every battery scene
-  std::vector<std::string> modes;   // empty: every mode
+  std::vector<std::string> scenes;  // empty means every battery scene
+  std::vector<std::string> modes;   // empty means every mode
   int seeds = kSuiteDefaultSeeds;   // seeds 1..seeds
-  std::size_t limit = 0;            // keep the first `limit` runs (0: all), for a CI slice
+  std::size_t limit = 0;            // keep the first `limit` runs (0 keeps all), for a CI slice
 };
 
 // The runs in their fixed order, the order of the CSV rows: scene (table order), distance, aim,
@@ -107,15 +107,15 @@ struct SuiteOutcome {
   std::string variant;  // SuiteVariant::label
   int near_fragments = 0;
   int camera_hits = 0;
-  int vanished = 0;  // faded out in view (fade): a failure as a cut is
+  int vanished = 0;  // faded out in view (fade), a failure as a cut is
   double deviation_mean_m = 0.0;
   int near_misses = 0;
   double strategy_ms_median = 0.0;
   bool clean() const { return near_fragments == 0 && camera_hits == 0 && vanished == 0; }
 };
 
-// One run: `none` on the run's scene (recorded as the reference), then every variant on the same
-// scene with its keys added. Outcomes in variant order.
+// One run, `none` on the run's scene (recorded as the reference), then every variant on the same
+// scene with its keys added. Outcomes are in variant order.
 std::vector<SuiteOutcome> run_suite_once(const std::string& scene_text, const SuiteRun& run,
                                          std::size_t run_index,
                                          const std::vector<SuiteVariant>& variants);
@@ -157,26 +157,26 @@ struct SuiteRecommendation {
   double deviation_mean_m = 0.0;  // over all runs
 };
 
-// The most robust variant other than `none`: the highest clean share over the player runs, then
+// The most robust variant other than `none`, by the highest clean share over the player runs, then
 // over all runs, then the least mean deviation over all runs (then the earlier row). `player` and
 // `all` are aggregate_suite's rows over the player runs (may be empty) and over all runs.
 std::optional<SuiteRecommendation> recommend_suite(const std::vector<SuiteRow>& player,
                                                    const std::vector<SuiteRow>& all);
 
-// The fingerprint of a plan for its slices (experiments/shard.hpp): the scene files' text, every
-// run with its scene keys, every variant with its keys, and the CSV's column header.
+// The fingerprint of a plan for its slices (experiments/shard.hpp), over the scene files' text,
+// every run with its scene keys, every variant with its keys, and the CSV's column header.
 std::string suite_plan_fingerprint(const std::map<std::string, std::string>& scenes,
                                    const std::vector<SuiteRun>& runs,
                                    const std::vector<SuiteVariant>& variants);
 
-// The tidy CSV: a header and one row per run and variant, strategy_ms_median last (the only
-// column whose bytes change between runs).
+// The tidy CSV, a header and one row per run and variant, with strategy_ms_median last as the only
+// column whose bytes change between runs.
 std::string suite_csv(const std::vector<SuiteRun>& runs, const std::vector<SuiteOutcome>& outcomes);
 
-// A suite CSV read back (a merged one: `fragsim merge` prints its tables): the runs in file order,
-// each starting where a row's run fields (scene, distance, aim, speed, seed, mode) change, and
-// the outcomes with their run index. Throws std::runtime_error naming the line: not the suite's
-// header, a row without 12 cells, an unreadable number.
+// A suite CSV read back (a merged one, whose tables `fragsim merge` prints), with the runs in file
+// order, each starting where a row's run fields (scene, distance, aim, speed, seed, mode) change,
+// and the outcomes with their run index. Throws std::runtime_error naming the line for: not the
+// suite's header, a row without 12 cells, an unreadable number.
 struct SuiteTable {
   std::vector<SuiteRun> runs;
   std::vector<SuiteOutcome> outcomes;

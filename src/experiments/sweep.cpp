@@ -48,7 +48,7 @@ int written_decimals(const std::string& text) {
   return dot == std::string::npos ? 0 : static_cast<int>(text.size() - dot - 1);
 }
 
-// lo + i step as text. Rounded to the decimals the user wrote, so 0.1 + 2 * 0.1 reads 0.3: the
+// lo + i step as text, rounded to the decimals the user wrote, so 0.1 + 2 * 0.1 reads 0.3, as the
 // exact value of a decimal range has no more decimals than lo and step. Then written as the
 // shortest text that reads back the same (number_format.hpp), as scene files write numbers.
 std::string range_value(double v, int decimals) {
@@ -181,7 +181,7 @@ std::vector<std::vector<std::size_t>> sweep_combinations(const std::vector<Sweep
   std::vector<std::size_t> index(axes.size(), 0);
   for (std::size_t c = 0; c < count; ++c) {
     out.push_back(index);
-    // An odometer: the last axis turns fastest, so the first axis varies slowest.
+    // An odometer, where the last axis turns fastest, so the first axis varies slowest.
     for (std::size_t k = axes.size(); k-- > 0;) {
       if (++index[k] < axes[k].values.size()) break;
       index[k] = 0;
@@ -301,8 +301,8 @@ std::string describe_combination(const SweepPlan& plan,
 }
 
 std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns) {
-  // The scene file's path is left out: the same scene read from another folder (another node's
-  // checkout) makes the same rows.
+  // The scene file's path is left out, because the same scene read from another folder (another
+  // node's checkout) makes the same rows.
   PlanText t;
   t.add("fragsim sweep plan 1").add(plan.scene_text).add(plan.base.size());
   for (const SceneOverride& o : plan.base) t.add(o.key).add(o.value);
@@ -341,7 +341,7 @@ std::vector<std::vector<Evaluation>> run_sweep(
         const SweepJob& job = plan.jobs[j];
         const Scene scene = parse_scene(plan.scene_text, plan.origin,
                                         sweep_overrides(plan, job.value_index, job.seed));
-        // Summaries only: the rows read nothing else.
+        // Summaries only, because the rows read nothing else.
         std::vector<Evaluation> summaries;
         for (const Evaluation& e : compare(scene, plan.strategies, plan.occlusion)) {
           Evaluation& one = summaries.emplace_back();

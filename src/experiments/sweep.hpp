@@ -1,6 +1,6 @@
 #pragma once
-// A parameter sweep (`fragsim sweep`): scene keys varied over lists or ranges of values, every
-// combination run for several seeds. This file holds the pure parts, apart from processes and
+// A parameter sweep (`fragsim sweep`) varies scene keys over lists or ranges of values and runs
+// every combination for several seeds. This file holds the pure parts, apart from processes and
 // files so they can be tested: parsing --vary specifications, the job list in its fixed order,
 // reading the sweep CSV back and the single-key summary (zero intersections per value, and the
 // smallest value from which a strategy keeps zero intersections). run_sweep, at the end, runs the
@@ -30,17 +30,17 @@ class SweepError : public std::runtime_error {
 inline constexpr std::size_t kMaxRangeValues = 100000;
 inline constexpr std::size_t kMaxSweepJobs = 1000000;
 
-// One --vary: a scene key and its values as scene-file text, in the order given.
+// One --vary, a scene key and its values as scene-file text, in the order given.
 struct SweepAxis {
   std::string key;
   std::vector<std::string> values;
 };
 
-// The values of a SPEC: a comma list `1,2,5` (any text a scene key takes, e.g. vectors `0 1.6 -5`
+// The values of a SPEC, a comma list `1,2,5` (any text a scene key takes, e.g. vectors `0 1.6 -5`
 // separated by commas) or an inclusive numeric range `lo:hi:step`. Range values are computed as
 // lo + i step (no accumulated rounding), hi is included within 1e-9 relative, and each value is
 // written with the decimals of lo and step (0.1:0.5:0.1 gives 0.1 0.2 0.3 0.4 0.5, not
-// 0.30000000000000004). Throws SweepError: step <= 0, hi < lo, more than kMaxRangeValues values,
+// 0.30000000000000004). Throws SweepError for step <= 0, hi < lo, more than kMaxRangeValues values,
 // non-numbers in a range, empty items, quotes or line breaks (they would break the CSV row).
 std::vector<std::string> parse_sweep_values(const std::string& spec);
 
@@ -51,19 +51,19 @@ SweepAxis parse_vary(const std::string& text);
 std::vector<std::uint64_t> seeds_up_to(long long n);
 std::vector<std::uint64_t> parse_seed_list(const std::string& text);
 
-// One job: a value per axis (index into that axis's values) and a seed.
+// One job, a value per axis (index into that axis's values) and a seed.
 struct SweepJob {
   std::vector<std::size_t> value_index;  // one per axis
   std::uint64_t seed = 0;
 };
 
 // The cartesian product of the axes' values and the seeds, in a fixed order that is the order of
-// the output rows: the first axis varies slowest, the seed fastest. Throws SweepError when the
-// product exceeds kMaxSweepJobs (before allocating it).
+// the output rows, with the first axis varying slowest and the seed fastest. Throws SweepError when
+// the product exceeds kMaxSweepJobs (before allocating it).
 std::vector<SweepJob> sweep_jobs(const std::vector<SweepAxis>& axes,
                                  const std::vector<std::uint64_t>& seeds);
 
-// The value combinations alone (the jobs of one seed), same order: validating each combination's
+// The value combinations alone (the jobs of one seed), same order, as validating each combination's
 // scene once covers every seed.
 std::vector<std::vector<std::size_t>> sweep_combinations(const std::vector<SweepAxis>& axes);
 
@@ -120,25 +120,26 @@ struct SweepPlan {
   std::size_t first_job = 0;
 };
 
-// A job's scene keys: the base options, one value per axis, the seed.
+// A job's scene keys: the base options, one value per axis and the seed.
 std::vector<SceneOverride> sweep_overrides(const SweepPlan& plan,
                                            const std::vector<std::size_t>& value_index,
                                            std::uint64_t seed);
 
-// The plan's fingerprint for its slices (experiments/shard.hpp): everything that decides the rows
-// (scene text, keys, values, jobs, strategies, occlusion) and the CSV's column header `columns`.
+// The plan's fingerprint for its slices (experiments/shard.hpp), over everything that decides the
+// rows (scene text, keys, values, jobs, strategies, occlusion) and the CSV's column header
+// `columns`.
 std::string sweep_plan_fingerprint(const SweepPlan& plan, const std::string& columns);
 
-// "a=1, b=2": one combination of the varied values; with the seed, "a=1, b=2, seed 3".
+// One combination of the varied values as "a=1, b=2", or with the seed "a=1, b=2, seed 3".
 std::string describe_combination(const SweepPlan& plan,
                                  const std::vector<std::size_t>& value_index);
 std::string describe_sweep_job(const SweepPlan& plan, const SweepJob& job);
 
 // Every job compared (compare(), `none` first) on `jobs` worker processes, one task per job. Per
-// job, in plan order whatever the order of completion, the strategies' evaluations in
-// --strategies order, summaries only (no per-step series), bit for bit as the worker computed
-// them (evaluation_codec.hpp). `on_done` gets the number of jobs finished so far. Throws
-// TaskFailed naming the job ("job 3 (a=1, seed 2): ..."), or Interrupted.
+// job, in plan order whatever the order of completion, it returns the strategies' evaluations in
+// --strategies order, summaries only (no per-step series), bit for bit as the worker computed them
+// (evaluation_codec.hpp). `on_done` gets the number of jobs finished so far. Throws TaskFailed
+// naming the job ("job 3 (a=1, seed 2): ..."), or Interrupted.
 std::vector<std::vector<Evaluation>> run_sweep(
     const SweepPlan& plan, int jobs,
     const std::function<void(std::size_t done)>& on_done = nullptr);

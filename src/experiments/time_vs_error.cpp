@@ -36,7 +36,7 @@ struct Timing {
   std::vector<double> compute_s, physics_ms, strategy_ms;
 };
 
-// One run of one configuration: its timings go to `timing`; the first run's results go to `m`,
+// One run of one configuration. Its timings go to `timing`; the first run's results go to `m`, and
 // later runs must reproduce them.
 void run_once(const Scene& scene, const TimeVsErrorOptions& o, bool first, Measured& m,
               Timing& timing) {
@@ -80,7 +80,7 @@ void compare_with_reference(Measured& m, const Measured& ref, double sample_dt_s
   double sum_m = 0.0, flight_sum_m = 0.0;
   long count = 0, flight_count = 0;
   for (std::size_t j = 0; j < samples; ++j) {
-    // 1e-9 s: a sample at the very step of first contact is no longer flight.
+    // With the 1e-9 s, a sample at the very step of first contact is not flight.
     const double t_s = static_cast<double>(j + 1) * sample_dt_s + 1e-9;
     for (std::size_t i = 0; i < m.samples[j].size(); ++i) {
       const double e = (m.samples[j][i] - ref.samples[j][i]).norm();
@@ -111,7 +111,7 @@ std::string overrides_text(const std::vector<SceneOverride>& overrides) {
   return s;
 }
 
-// RFC 4180: quoted when it holds a comma, a quote or a line break.
+// Quoted per RFC 4180 when it holds a comma, a quote or a line break.
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string q = "\"";
@@ -184,7 +184,7 @@ std::vector<BenchRow> run_time_vs_error(const Scene& base, const std::vector<Ben
     return s;
   };
   // Two configurations are the same simulation when their scenes agree once `auto` is replaced by
-  // the solver it picks (world.cpp: exact unless fragments collide or a wall is needed).
+  // the solver it picks (in world.cpp, exact unless fragments collide or a wall is needed).
   const bool wall = make_strategy(options.strategy, base)->needs().camera_wall.has_value();
   auto identity = [&](Scene s) {
     if (s.sim.solver == Solver::kAuto) {

@@ -1,9 +1,9 @@
 #pragma once
-// Run time against error (`fragsim bench`): the same scene and strategy under different step
-// sizes, solvers, predictors, replanning rules and skips, each timed and compared with a reference
-// run (the finest step with the exact solver). Errors: fragment positions at shared sample times,
-// near-plane intersections and camera hits, candidate decisions, and the predictor's error at
-// each fragment's first contact.
+// Run time against error (`fragsim bench`), the same scene and strategy under different step sizes,
+// solvers, predictors, replanning rules and skips, each timed and compared with a reference run
+// (the finest step with the exact solver). Errors: fragment positions at shared sample times,
+// near-plane intersections and camera hits, candidate decisions, and the predictor's error at each
+// fragment's first contact.
 
 #include <functional>
 #include <iosfwd>
@@ -22,8 +22,8 @@ struct BenchConfig {
 };
 
 // The configurations the issue asks for, for `strategy` on `base`: the step, the solver and the
-// skips, then the strategy's own accuracy settings (its ParamSpec's tuning, e.g. edge's
-// predictor and replan). The first one is the scene as given ("default").
+// skips, then the strategy's own accuracy settings (its ParamSpec's tuning, e.g. edge's predictor
+// and replan). The first one is the scene as given ("default").
 std::vector<BenchConfig> standard_bench_configs(const std::string& strategy);
 
 // The finest step the bench tries (1/480 s) with the exact solver.
@@ -43,8 +43,8 @@ struct BenchRow {
   double compute_s_per_sim_s = 0.0;
   double physics_ms_per_step = 0.0;
   double strategy_ms_per_step = 0.0;
-  // |position - reference position| over every fragment and sample time at which the fragment
-  // is still in flight in both runs: the numerical error of the step and the strategy's pushes.
+  // |position - reference position| over every fragment and sample time at which the fragment is
+  // still in flight in both runs, the numerical error of the step and the strategy's pushes.
   double flight_error_mean_m = 0.0;
   double flight_error_max_m = 0.0;
   // The same over all sample times. Once boxes bounce and roll, any difference grows

@@ -29,7 +29,7 @@ std::optional<std::string> real_rule(double v, const Range& range) {
 
 std::optional<std::string> real_or_inf_rule(double v, const Range& range) {
   if (v == std::numeric_limits<double>::infinity()) return std::nullopt;
-  // -inf and nan break the rule as a number out of range does: the message says the rule.
+  // -inf and nan break the rule as a number out of range does, so the message says the rule.
   if (!std::isfinite(v) || !range.contains(v)) return range.text() + ", or inf";
   return std::nullopt;
 }

@@ -1,8 +1,8 @@
 #pragma once
-// One setting, declared once: its name, unit, help, rule (a range or a list of choices) and the
+// One setting, declared once with its name, unit, help, rule (a range or a list of choices) and the
 // member it sets; the default is the member's initialiser. From the declaration come the parser
-// (text to value, checked), the writer (value to text that reads back bit for bit), the --help
-// line and the check of a value set in code, so the rule cannot differ between them.
+// (text to value, checked), the writer (value to text that reads back bit for bit), the --help line
+// and the check of a value set in code, so the rule cannot differ between them.
 
 #include <Eigen/Core>
 #include <cmath>
@@ -20,7 +20,7 @@
 
 namespace fragsim::settings {
 
-// An interval rule: [lo, hi] with either end open.
+// An interval rule, [lo, hi] with either end open.
 struct Range {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();
@@ -59,7 +59,7 @@ struct Key {
 template <class Owner>
 using Keys = std::vector<Key<Owner>>;
 
-// The help line: the non-empty parts joined by "; ".
+// The help line, with the non-empty parts joined by "; ".
 std::string help_text(std::initializer_list<std::string_view> parts);
 
 // The rules, shared by parsing and by checking a value set in code.
@@ -177,7 +177,7 @@ Key<Owner> vec3(std::string name, std::string_view unit, std::string_view help,
           [m, each](const Owner& o) { return vec3_rule(o.*m, each); }};
 }
 
-// A list of points 'x y z; x y z; ...': at least one, at most 1000, each component in
+// A list of points 'x y z; x y z; ...', at least one and at most 1000, each component in
 // [-1e6, 1e6].
 template <class Owner>
 Key<Owner> points(std::string name, std::string_view unit, std::string_view help,
@@ -188,7 +188,7 @@ Key<Owner> points(std::string name, std::string_view unit, std::string_view help
           [m](const Owner& o) { return points_rule(o.*m); }};
 }
 
-// A plain text value (a file name, a strategy name): one line, no quotes or commas, so it
+// A plain text value (a file name, a strategy name) of one line with no quotes or commas, so it
 // survives config.ini and CSV cells.
 template <class Owner>
 Key<Owner> text(std::string name, std::string_view help, std::string Owner::*m) {
@@ -215,8 +215,8 @@ Keys<Outer> in_section(std::string_view section, const Keys<Inner>& keys, Get ge
   return out;
 }
 
-// The one-line messages: a text from `where` (file:line, --option) that breaks the key's rule,
-// and a value set in code that does.
+// The one-line messages for a text from `where` (file:line, --option) that breaks the key's rule,
+// and for a value set in code that does.
 std::string bad_text_message(const std::string& where, const std::string& key,
                              const std::string& text, const std::string& rule);
 std::string bad_value_message(const std::string& key, const std::string& value,

@@ -8,9 +8,9 @@
 
 namespace fragsim {
 
-// The state of a set of ODE bodies, to take a step again from where it began (World::step redoes
-// an exact step whose LCP failed): position, orientation, velocities and the forces and torques
-// added for the step. Disabled bodies are left out: a step does not move them.
+// The state of a set of ODE bodies, to take a step again from where it began (World::step redoes an
+// exact step whose LCP failed), as position, orientation, velocities and the forces and torques
+// added for the step. Disabled bodies are left out, as a step does not move them.
 class BodySnapshot {
  public:
   void save(std::span<const dBodyID> bodies, std::span<const dBodyID> more);

@@ -54,7 +54,7 @@ CameraPose pose_looking_at(const CameraDef& camera, const Eigen::Vector3d& eye_m
   if (std::abs(forward.dot(world_up)) > 0.999) world_up = Eigen::Vector3d(0, 0, 1);
   const Eigen::Vector3d right = forward.cross(world_up).normalized();
   CameraPose pose = pose_with_frustum(camera, eye_m, forward, right.cross(forward));
-  pose.right = right;  // as computed, not re-derived: keeps the path camera's bits of old
+  pose.right = right;  // as computed, not re-derived, so path camera poses keep their exact bits
   return pose;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Where the camera is at every instant, whichever way its motion is given (camera.mode): a
+// Where the camera is at every instant, whichever way its motion is given (camera.mode), as a
 // scripted path, a replayed track or a seeded player. The simulation asks it for the pose and the
 // velocity of each step; strategies only ever see those of the present step.
 
@@ -23,9 +23,9 @@ class CameraMotion {
 };
 
 // The camera's limits as the scene declares them, for the strategies (StepContext's rule). V_c
-// always; acceleration and turn rate only for a player (its acceleration may be +infinity: instant
-// turns); kUndeclaredBound for a path or a track, which may start, stop and turn at once. They
-// reach a strategy as StepContext's camera_max_* (a game's as fragsim_camera_def's max_*).
+// always; acceleration and turn rate only for a player (its acceleration may be +infinity, for
+// instant turns); kUndeclaredBound for a path or a track, which may start, stop and turn at once.
+// They reach a strategy as StepContext's camera_max_* (a game's as fragsim_camera_def's max_*).
 struct CameraLimits {
   double max_speed_mps = 0.0;
   double max_accel_mps2 = kUndeclaredBound;

@@ -1,5 +1,5 @@
 #pragma once
-// The camera's scripted motion (camera.mode = path): along the waypoints at constant speed from
+// The camera's scripted motion (camera.mode = path) runs along the waypoints at constant speed from
 // t = 0, stopping at the last one, looking at one fixed point or, with one look-at point per
 // waypoint, at the point interpolated along the path in step with the eye (so the view pans).
 
@@ -19,8 +19,8 @@ class CameraPath final : public CameraMotion {
   Eigen::Vector3d look_at(double t_s) const;
 
  private:
-  // Where on the path the eye is at t_s: segment i - 1 -> i at share u (i = 0: before the
-  // first point or with a single one; i = size: at the end).
+  // Where on the path the eye is at t_s, as segment i - 1 -> i at share u (i = 0 before the first
+  // point or with a single one, i = size at the end).
   struct Place {
     std::size_t i;
     double u;

@@ -24,9 +24,9 @@ constexpr std::array<const char*, 10> kColumns{"t_s",       "eye_x_m",   "eye_y_
 // round-trip numbers are exact to the last bit).
 constexpr double kBasisTolerance = 1e-6;
 
-// One line's cells as RFC 4180 reads them: a cell in double quotes (spreadsheets and pandas
-// quote every cell) may hold commas, and "" in it stands for one quote. Spaces around a cell are
-// dropped. Nothing for a quote left open, or text after a closing quote.
+// One line's cells as RFC 4180 reads them. A cell in double quotes (spreadsheets and pandas quote
+// every cell) may hold commas, and "" in it stands for one quote. Spaces around a cell are dropped.
+// Nothing for a quote left open, or text after a closing quote.
 std::optional<std::vector<std::string>> split(const std::string& line) {
   std::vector<std::string> cells;
   std::size_t at = 0;
@@ -59,9 +59,9 @@ std::optional<std::vector<std::string>> split(const std::string& line) {
   }
 }
 
-// What a track in other units or axes looks like when read as fragsim's own, and the key that
-// reads it right: a speed about 10, 100 or 1000 times the bound (decimetres, centimetres as
-// Unreal writes, millimetres), or up vectors along the file's z. Empty when neither fits.
+// What a track in other units or axes looks like when read as fragsim's own, and the key that reads
+// it right, for a speed about 10, 100 or 1000 times the bound (decimetres, centimetres as Unreal
+// writes, millimetres), or up vectors along the file's z. Empty when neither fits.
 std::string frame_hint(double speed_mps, double max_speed_mps, const Eigen::Vector3d& file_up,
                        const AxisConvention& frame) {
   std::string hint;
@@ -117,7 +117,7 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
     throw InputError(origin + ":" + std::to_string(number_of_line) + ": " + why);
   };
 
-  // The header: the first non-empty line.
+  // The header is the first non-empty line.
   std::vector<std::string> header;
   std::string header_line;
   while (header.empty() && std::getline(in, line)) {
@@ -137,7 +137,7 @@ std::vector<CameraSample> parse_camera_track(const std::string& text, const std:
       if (header[h] == kColumns[c]) found = h;
     }
     if (found == header.size()) {
-      // A header split on ';' or quoted another way reads as one odd name: show what was read.
+      // A header split on ';' or quoted another way reads as one odd name, so show what was read.
       fail(std::string("missing column '") + kColumns[c] + "'; the header read was: " +
            visible_text(header_line) + "; expected comma-separated names: " + expected_header());
     }

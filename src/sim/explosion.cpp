@@ -8,10 +8,10 @@ namespace fragsim {
 namespace {
 
 // The ballistic velocity that takes a point from `from` to the camera's eye, flying the
-// straight-line distance at mean speed `speed_mps`: to where the eye will be when the debris
-// arrives (aim = future; the arrival time is found by fixed-point iteration: the camera is slower
-// than the debris in any sensible scene, the iteration count bounds it otherwise), or to where it
-// is at t = 0 (aim = present).
+// straight-line distance at mean speed `speed_mps`, to where the eye will be when the debris
+// arrives (aim = future) or where it is at t = 0 (aim = present). The arrival time is found by
+// fixed-point iteration, which converges as the camera is slower than the debris in any sensible
+// scene; the iteration count bounds it otherwise.
 Eigen::Vector3d aimed_velocity(const Eigen::Vector3d& from, const CameraMotion& camera,
                                ExplosionAim aim, double speed_mps,
                                const Eigen::Vector3d& gravity_mps2) {

@@ -6,7 +6,7 @@
 namespace fragsim {
 namespace {
 
-// A box's corners (bit 0: +x, bit 1: +y, bit 2: +z) and faces, counter-clockwise from outside,
+// A box's corners (bit 0 is +x, bit 1 +y, bit 2 +z) and faces, counter-clockwise from outside, with
 // normals +x, -x, +y, -y, +z, -z.
 const std::vector<std::vector<int>>& box_faces() {
   static const std::vector<std::vector<int>> faces = {{1, 3, 7, 5}, {0, 4, 6, 2}, {2, 6, 7, 3},
@@ -72,7 +72,7 @@ FaceManifold face_manifold(const WorldHull& a, const WorldHull& b, const Eigen::
     const Eigen::Vector3d& p = ref.vertices_m[static_cast<std::size_t>(ref_face[e])];
     const Eigen::Vector3d& q =
         ref.vertices_m[static_cast<std::size_t>(ref_face[(e + 1) % ref_face.size()])];
-    // Counter-clockwise about the outward normal: (q - p) x normal points out of the face.
+    // Counter-clockwise about the outward normal, so (q - p) x normal points out of the face.
     const Eigen::Vector3d side = (q - p).cross(ref_normal);
     clipped.clear();
     for (std::size_t i = 0; i < poly.size(); ++i) {

@@ -14,7 +14,7 @@ namespace {
 // Mixed into the scene's seed so the player's draws never share the explosion's sequence.
 constexpr std::uint64_t kPlayerStream = 0x9E3779B97F4A7C15ull;
 
-// Waiting time of a Poisson process with mean `mean_s` (infinite: never).
+// Waiting time of a Poisson process with mean `mean_s` (infinite means never).
 double next_wait_s(Random& rng, double mean_s) {
   if (std::isinf(mean_s)) return mean_s;
   return -mean_s * std::log(1.0 - rng.uniform());
@@ -45,7 +45,7 @@ Eigen::Vector3d turn_toward(const Eigen::Vector3d& from, const Eigen::Vector3d& 
   const double angle = std::acos(std::clamp(from.dot(to), -1.0, 1.0));
   if (angle <= max_rad) return to;
   const double s = std::sin(angle);
-  if (s < 1e-12) {  // opposite: turn about world y (or any axis orthogonal to `from`)
+  if (s < 1e-12) {  // opposite, so turn about world y (or any axis orthogonal to `from`)
     Eigen::Vector3d axis = from.cross(Eigen::Vector3d::UnitY());
     if (axis.norm() < 1e-9) axis = from.cross(Eigen::Vector3d::UnitX());
     axis.normalize();
@@ -61,7 +61,7 @@ std::vector<CameraSample> player_track(const Scene& scene) {
   const double dt = scene.sim.dt_s;
   const auto count =
       static_cast<std::size_t>(scene.step_count()) + static_cast<std::size_t>(std::ceil(2.0 / dt));
-  const double accel_step = cam.player_accel_mps2 * dt;  // infinite: instant
+  const double accel_step = cam.player_accel_mps2 * dt;  // infinite means instant
   const double turn_step_rad = cam.turn_rate_degps * kPi / 180.0 * dt;
   const Eigen::Vector3d centre = object_centre(scene);
 

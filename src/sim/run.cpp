@@ -64,8 +64,8 @@ StepContext Run::next_context() const {
   ctx.step = k;
   ctx.t_s = t;
   ctx.dt_s = scene_.sim.dt_s;
-  // No end_time_s: the scene's duration is where fragsim stops measuring, which a strategy in a
-  // game could not know (ctx.end_time_s stays +infinity).
+  // No end_time_s, because the scene's duration is where fragsim stops measuring, which a strategy
+  // in a game could not know (ctx.end_time_s stays +infinity).
   ctx.camera = camera_.pose_at(t);
   ctx.camera_velocity_mps = camera_.velocity_at(t);
   ctx.camera_max_speed_mps = limits_.max_speed_mps;
@@ -95,8 +95,8 @@ void Run::step() {
   world_.step(dt);
   world_.read(states_);
   const double physics_s = seconds_since(physics_start);
-  // Always-on state check (MuJoCo's habit): a non-finite fragment is counted and frozen where
-  // it last was finite, so no NaN reaches a strategy, a metric or a file.
+  // An always-on state check (MuJoCo's habit) counts a non-finite fragment and freezes it where it
+  // last was finite, so no NaN reaches a strategy, a metric or a file.
   for (std::size_t i = 0; i < states_.size(); ++i) {
     FragmentState& f = states_[i];
     if (f.position_m.allFinite() && f.velocity_mps.allFinite() && f.rotation.allFinite()) {

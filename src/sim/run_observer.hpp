@@ -1,5 +1,5 @@
 #pragma once
-// Observers watch a run: after every step they get a read-only snapshot and can never change the
+// Observers watch a run. After every step they get a read-only snapshot and can never change the
 // simulation. Metrics, recorders and progress reports are observers.
 
 #include <span>
@@ -27,7 +27,7 @@ struct StepSnapshot {
   std::span<const int> capped;  // fragments whose force the cap reduced
   int guarded = 0;
   int deferred = 0;  // fragments a per-step budget left unsolved
-  // Each fragment's opacity in this frame (fade); empty: all opaque (every other strategy, and
+  // Each fragment's opacity in this frame (fade). Empty means all opaque (every other strategy, and
   // step 0, drawn before any strategy spoke).
   std::span<const float> opacity;
   // What the physics saw in that step.

@@ -7,7 +7,7 @@
 namespace fragsim {
 namespace {
 
-// The camera frame's rotation: columns right, up, -forward (right-handed).
+// The camera frame's rotation, with columns right, up, -forward (right-handed).
 Eigen::Quaterniond orientation(const CameraSample& s) {
   Eigen::Matrix3d m;
   m.col(0) = s.forward.cross(s.up);

@@ -40,8 +40,8 @@ void add_section(std::vector<KeySpec>& out, std::string_view section, Def Scene:
   }
 }
 
-// The scene's own keys before the strategies' sections and after them: config.ini has always
-// listed the strategies between [camera] and [metrics].
+// The scene's own keys before the strategies' sections and after them, because config.ini lists the
+// strategies between [camera] and [metrics].
 std::vector<KeySpec> keys_before_strategies() {
   using namespace settings;
   std::vector<KeySpec> t;
@@ -298,7 +298,7 @@ const KeySpec* find_key(const std::vector<KeySpec>& keys, const std::string& nam
   return nullptr;
 }
 
-// Where each key stands in a scene file's text: section-qualified name -> 1-based line numbers.
+// Where each key stands in a scene file's text, as section-qualified name -> 1-based line numbers.
 // Also rejects lines that are neither comments, sections nor key = value, naming the line.
 std::map<std::string, std::vector<int>> index_lines(const std::string& text,
                                                     const std::string& origin) {
@@ -345,13 +345,13 @@ void apply(const std::vector<KeySpec>& keys, Scene& scene, const std::string& ke
   try {
     spec->parse(scene, value);
   } catch (const ValueError& e) {
-    // settings::apply's message, with the value made visible: a NUL would end it.
+    // settings::apply's message with the value made visible, because a NUL would end it.
     throw SceneError(
         settings::bad_text_message(where, spec->name, visible_text(trim(value)), e.rule));
   }
 }
 
-// A key the user set, and where: "scene.ini:3" or "--camera.near_m".
+// A key the user set, and where, as "scene.ini:3" or "--camera.near_m".
 struct SetKey {
   std::string key;
   std::string where;
@@ -370,9 +370,10 @@ bool names_key(const std::string& message, const std::string& key) {
   return false;
 }
 
-// A rule across keys broken: the message names the key it is about first ("a = 1: must be <= b =
-// 2"). When the user did not set that one but set another the message names, the other is the
-// one to change: the message is put at its place (file:line or --option).
+// A broken rule across keys. The message names the key it is about first
+// ("a = 1: must be <= b = 2"). When the user did not set that one but set another the message
+// names, the other is the one to change, so the message is put at its place (file:line or
+// --option).
 std::string placed(const std::string& message, const std::vector<SetKey>& set) {
   const std::string subject = message.substr(0, message.find_first_of(" :"));
   if (message.compare(subject.size(), 3, " = ") != 0) return message;  // not about a value
@@ -416,9 +417,9 @@ std::string short_text(double v) {
   return text;
 }
 
-// An object that starts partly below the ground is thrown out of it by ODE's penetration
-// correction (up to 7.2 m/s with no blast at all), so it is refused: its lowest point, the cube's
-// bottom face or the mesh's lowest vertex, must be at or above the ground plane.
+// An object that starts partly below the ground is thrown out of it by ODE's penetration correction
+// (up to 7.2 m/s with no blast at all), so it is refused. Its lowest point, the cube's bottom face
+// or the mesh's lowest vertex, must be at or above the ground plane.
 void check_object_above_ground(const Scene& s) {
   if (!s.ground.enabled) return;
   const Eigen::Vector3d centre_m = object_centre(s);
@@ -451,7 +452,7 @@ void check_object_above_ground(const Scene& s) {
                    "ground.height_m = " + format_double(s.ground.height_m) +
                    ": the object must start wholly at or above the ground");
 }
-// config.ini's first line: fragsim wrote every key of the scene, those its modes make moot too.
+// config.ini's first line, saying fragsim wrote every key of the scene, moot ones too.
 constexpr std::string_view kResolvedMark = "# fragsim scene, fully resolved";
 
 Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description& options,
@@ -482,10 +483,10 @@ Scene parse_with(const std::vector<KeySpec>& keys, const po::options_description
       apply(keys, scene, o.string_key, value, at);
       set.push_back({o.string_key, at, value});
     }
-    // A file a scene names (a mesh, a camera track) beside the scene file is found from
-    // anywhere; held absolute, the scene's config.ini (and a worker's copy of the scene) still
-    // names the same file. On the command line a relative path is the shell's: the current
-    // folder's, made absolute below for the same reason.
+    // A file a scene names (a mesh, a camera track) beside the scene file is held absolute, so it
+    // is found from anywhere and the scene's config.ini (and a worker's copy of the scene) names
+    // the same file. On the command line a relative path is the shell's, the current folder's, made
+    // absolute below for the same reason.
     make_paths_absolute(scene, std::filesystem::path(origin).parent_path());
   }
   for (const SceneOverride& o : overrides) {
@@ -642,8 +643,8 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
     fail("simulation.dt_s = " + format_double(s.sim.dt_s) +
          ": must be <= simulation.duration_s = " + format_double(s.sim.duration_s));
   }
-  // The occlusion raster is grid_width_px wide and width / aspect tall: a tall thin camera would
-  // ask for billions of rows (camera.aspect = 3e-8 ran out of memory, 2.7e-6 ran for minutes).
+  // The occlusion raster is grid_width_px wide and width / aspect tall, so a tall thin camera would
+  // ask for billions of rows (camera.aspect = 3e-8 would exhaust memory, 2.7e-6 take minutes).
   const double rows = std::round(s.metrics.grid_width_px / s.camera.aspect);
   if (rows > 4096) {
     fail("camera.aspect = " + format_double(s.camera.aspect) + ": the occlusion raster would be " +
@@ -656,9 +657,9 @@ void validate_scene(const Scene& s, const StrategyTable& table) {
          " steps: at most 10,000,000");
   }
   if (s.camera.mode == CameraMode::kPlayer) {
-    // The player's track is made ahead, one sample per step for the run and 2 s beyond it, with
-    // a change of course every player_interval_s on average: both bounded as the steps are (a
-    // step of 4.5e-9 s asked for 36 GB of samples, an interval of 6.5e-9 s ran for minutes).
+    // The player's track is made ahead, one sample per step for the run and 2 s beyond it, with a
+    // change of course every player_interval_s on average. Both are bounded as the steps are (a
+    // step of 4.5e-9 s would ask for 36 GB of samples, an interval of 6.5e-9 s would take minutes).
     const double span_s = s.sim.duration_s + 2.0;
     const double samples = std::ceil(span_s / s.sim.dt_s);
     if (samples > 1e7) {

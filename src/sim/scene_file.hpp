@@ -1,6 +1,6 @@
 #pragma once
 // Scene settings from a scene file (Boost.Program_options' INI syntax) and from the command line
-// (--section.key value): one table of keys serves both, with every key's unit, default and range.
+// (--section.key value). One table of keys serves both, with every key's unit, default and range.
 // The table is the scene's own keys (declared in scene_file.cpp) and every registered strategy's
 // (declared in the strategy's own files, strategies/registry.hpp); the functions that take a
 // StrategyTable use its strategies instead of the registry's (a test's table, say).
@@ -28,7 +28,7 @@ class SceneError : public InputError {
 const boost::program_options::options_description& scene_options();
 boost::program_options::options_description scene_options(const StrategyTable& table);
 
-// A key set on the command line: the name without dashes, its value.
+// A key set on the command line, with the name without dashes and its value.
 struct SceneOverride {
   std::string key;
   std::string value;
@@ -54,7 +54,7 @@ Scene parse_scene(const std::string& text, const std::string& origin,
 Scene parse_scene(const std::string& text, const std::string& origin,
                   const std::vector<SceneOverride>& overrides, const StrategyTable& table);
 
-// The fully resolved scene as a scene file: reading it back gives the same Scene bit for bit.
+// The fully resolved scene as a scene file, which reads back as the same Scene bit for bit.
 std::string scene_to_ini(const Scene& scene);
 std::string scene_to_ini(const Scene& scene, const StrategyTable& table);
 

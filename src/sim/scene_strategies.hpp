@@ -1,5 +1,5 @@
 #pragma once
-// A scene's strategies: the registry (strategies/registry.hpp) fed the scene's settings. The
+// A scene's strategies, the registry (strategies/registry.hpp) fed the scene's settings. The
 // strategies know nothing of scenes; this is where the simulation's side meets them.
 
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// A whole run at once: a Run (run.hpp) stepped from the explosion to the scene's last step.
+// A whole run at once, a Run (run.hpp) stepped from the explosion to the scene's last step.
 
 #include <span>
 

@@ -29,8 +29,8 @@ namespace {
 // ODE reports through process-wide hooks that carry no context pointer, so its warnings can only
 // be counted process-wide; runs read the counter before and after (World::ode_messages).
 std::atomic<long> g_ode_messages{0};
-// The exact solver's LCP failures are counted apart: World::step redoes such a step, and counts
-// that (World::exact_step_retries); a failure it could not redo would still be a message.
+// The exact solver's LCP failures are counted apart, because World::step redoes such a step and
+// counts that (World::exact_step_retries); a failure it could not redo would still be a message.
 std::atomic<long> g_lcp_failures{0};
 std::atomic<long> g_exact_step_retries{0};
 
@@ -42,8 +42,8 @@ void count_message(int, const char* msg, va_list) {
   }
 }
 
-// ODE exits (errors) or aborts (debug checks) after its hook returns: say what happened first, as
-// one line, in fragsim's voice.
+// ODE exits (errors) or aborts (debug checks) after its hook returns, so first say what happened,
+// as one line, in fragsim's voice.
 void report_fatal(int num, const char* msg, va_list ap) {
   std::fprintf(stderr, "fragsim: ODE internal error %d: ", num);
   std::vfprintf(stderr, msg, ap);
@@ -73,7 +73,7 @@ struct GeomTag {
 };
 
 void set_pose(dBodyID body, const Eigen::Vector3d& pos, const Eigen::Matrix3d& rot) {
-  dMatrix3 r;  // ODE: 3x4 row-major
+  dMatrix3 r;  // ODE's layout, 3x4 row-major
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) r[i * 4 + j] = rot(i, j);
     r[i * 4 + 3] = 0.0;
@@ -86,36 +86,35 @@ constexpr int kMaxContactsPerPair = 4;
 // A convex piece's face on the ground or on a box may have more than 4 corners; with only 4 of
 // them as contacts the piece would rest on part of its face and tip. Boxes keep 4, bit for bit.
 constexpr int kMaxConvexContacts = 8;
-// The constraint force mixing of a convex piece's ground contacts. Double-precision ODE's world
-// CFM is 1e-10, so a piece's up to 4 ground contacts (vertices below the plane, often nearly in a
-// line) leave the exact solver's LCP nearly singular: the soak found "LCP internal error, s <= 0"
-// on 27 Voronoi cells landing at dt 0.1 s. 1e-5, ODE's single-precision default, makes it rarer;
-// boxes keep the world's value. No value makes it never happen (the soak found it at every CFM
-// tried, on cells and on cubes), so World::step also redoes a step whose LCP failed.
+// The constraint force mixing of a convex piece's ground contacts. At double-precision ODE's world
+// CFM, 1e-10, a piece's up to 4 ground contacts (vertices below the plane, often nearly in a line)
+// leave the exact solver's LCP nearly singular, and the soak gets "LCP internal error, s <= 0" on
+// 27 Voronoi cells landing at dt 0.1 s. 1e-5, ODE's single-precision default, makes it rarer; boxes
+// keep the world's value. No value rules it out (the soak gets it at every CFM tried, on cells and
+// on cubes), so World::step also redoes a step whose LCP failed.
 constexpr double kConvexGroundCfm = 1e-5;
-// The speculative contacts' CFM as a share, CFM = share x dt / m (ground_sweep.hpp): ODE's CFM is
-// absolute (a contact keeps CFM x its force of approach speed), so a fixed value would let a
-// heavy piece through; scaled by dt / m a contact keeps at most this share of the speed it takes
-// away, whatever the mass and step.
+// The speculative contacts' CFM as a share, CFM = share x dt / m (ground_sweep.hpp). ODE's CFM is
+// absolute (a contact keeps CFM x its force of approach speed), so a fixed value would let a heavy
+// piece through; scaled by dt / m, a contact keeps at most this share of the speed it takes away,
+// whatever the mass and step.
 constexpr double kSweepCfmShare = 1e-3;
 
 // The most a fragment's contact may give way to a unit impulse in ODE's units, 1/m + r^2/I (the
-// entries of the matrix J M^-1 J^T that ODE's exact solver factors), as a bound: 1/m plus the
-// bounding radius squared over the smallest principal moment. ODE's exact solver aborts the
-// process (dxLDLTRemove: "d[i] != 0", or dxNormalize4 after it) once that reaches about 5e7 per
-// kg at any step from 1 ms to 1 s and any CFM (measured on boxes dropped on a plane: a 1 cm cube
-// of 3e-8 kg fails, of 1e-7 kg runs; a 0.1 m cube of 1 kg with its inertia cut 1e8 times fails
-// as well), and QuickStep does not; heavy bodies (1e30 kg) do not. The world therefore works in
-// a mass unit that keeps every fragment below this bound, 50 times under the failure: ODE's
-// masses are kg times ode_mass_scale (1 unless a fragment is that light, as in every shipped
-// scene), and forces and CFMs are scaled to match, so that the run is the same physics in
-// another unit: the ground, the camera and the wall are immovable, the fragments all take the
-// same factor, and every velocity is unchanged.
+// entries of the matrix J M^-1 J^T that ODE's exact solver factors), bounded by 1/m plus the
+// bounding radius squared over the smallest principal moment. ODE's exact solver aborts the process
+// (dxLDLTRemove: "d[i] != 0", or dxNormalize4 after it) once that reaches about 5e7 per kg at any
+// step from 1 ms to 1 s and any CFM; QuickStep and heavy bodies (1e30 kg) do not. On boxes dropped
+// on a plane, a 1 cm cube of 3e-8 kg fails, one of 1e-7 kg runs, and a 0.1 m cube of 1 kg with its
+// inertia cut 1e8 times fails too. The world therefore works in a mass unit that keeps every
+// fragment 50 times under the failure. ODE's masses are kg times ode_mass_scale (1 unless a
+// fragment is that light, as in every shipped scene), and forces and CFMs are scaled to match, so
+// the run is the same physics in another unit. The ground, camera and wall are immovable, the
+// fragments all take the same factor, and every velocity is unchanged.
 constexpr double kMaxInverseMassPerKg = 1e6;
 
-// Below these a piece's mass or smallest moment is refused: ODE needs both positive and normal
-// (dMassCheck), and so does ode_mass_scale's arithmetic, with room to spare (a 1e-60 m grain of
-// anything still runs; object.size_m and object.density_kgpm3 reach below them only together).
+// Below these a piece's mass or smallest moment is refused, because ODE needs both positive and
+// normal (dMassCheck), and so does ode_mass_scale's arithmetic, with room to spare (a 1e-60 m grain
+// of anything still runs; object.size_m and object.density_kgpm3 reach below them only together).
 constexpr double kLeastMassKg = 1e-250;
 constexpr double kLeastMomentKgm2 = 1e-250;
 
@@ -143,13 +142,13 @@ void check_masses(const std::vector<FragmentSpawn>& spawns) {
   }
 }
 
-// The bound above for a fragment: 1/m + R^2 / I_min.
+// The bound above for a fragment, 1/m + R^2 / I_min.
 double inverse_mass_bound_per_kg(const FragmentSpawn& s) {
   const double radius_m = s.shape ? s.shape->radius_m : s.half_extents_m.norm();
   return 1.0 / s.mass_kg + radius_m * radius_m / smallest_moment_kgm2(s);
 }
 
-// ODE's mass per kg for these fragments: 1, or what brings the loosest below the bound.
+// ODE's mass per kg for these fragments, 1 or what brings the loosest below the bound.
 double ode_mass_scale(const std::vector<FragmentSpawn>& spawns) {
   double loosest = 0.0;
   for (const FragmentSpawn& s : spawns) loosest = std::max(loosest, inverse_mass_bound_per_kg(s));
@@ -191,8 +190,8 @@ Eigen::Matrix3d geom_rotation(dGeomID g) {
 
 // Contacts between convex a (g1) and convex-or-box b (g2). Debian's ODE 0.16 is built with libccd,
 // so its dispatch sends convex-box and convex-convex to libccd's MPR, which finds overlap, normal
-// and depth well but returns one point: a piece resting on a box then pivots on that point and
-// spins on it for ever (a 0.1 m convex cube on a static box: 2.7 rad/s after 10 s, 12 mm sunk,
+// and depth well but returns one point. A piece resting on a box then pivots and spins on that
+// point for ever (a 0.1 m convex cube on a static box turns at 2.7 rad/s after 10 s, 12 mm sunk,
 // where the same cube on the plane, whose collider returns every vertex below it, rests at once).
 // So MPR's answer is the gate and the normal, and the points are the face manifold
 // (face_manifold.hpp). An edge or corner contact (no face turned to the normal, or nothing left
@@ -224,10 +223,10 @@ int convex_manifold(dGeomID a, const WorldHull& ha, dGeomID b, const WorldHull& 
   return count;
 }
 
-// Keeps `keep` of the n contacts at out (stride `skip`) spread over the footprint, in place: the
-// deepest, then each time the one farthest from all kept so far (first in ODE's order on a tie).
-// A piece resting on a face with many corners keeps its support polygon's extremes; n <= keep
-// leaves the contacts as they are.
+// Keeps, in place, `keep` of the n contacts at out (stride `skip`) spread over the footprint, the
+// deepest, then each time the one farthest from all kept so far (first in ODE's order on a tie). A
+// piece resting on a face with many corners keeps its support polygon's extremes; n <= keep leaves
+// the contacts as they are.
 int keep_spread(dContactGeom* out, int n, int keep, int skip) {
   if (n <= keep) return n;
   auto* bytes = reinterpret_cast<char*>(out);
@@ -268,7 +267,7 @@ int keep_spread(dContactGeom* out, int n, int keep, int skip) {
 constexpr double kWakeMargin_m = 0.05;
 
 // The camera's view volume, to tell whether a sphere may be seen. The near plane is left out on
-// purpose (the sphere is only tested against the eye): the near-plane strategy moves it.
+// purpose (the sphere is only tested against the eye), because the near-plane strategy moves it.
 class ViewVolume {
  public:
   explicit ViewVolume(const CameraPose& pose) : pose_(pose), frustum_(pose.frustum()) {}
@@ -290,7 +289,7 @@ struct World::Impl {
   dJointGroupID contacts = nullptr;
   std::vector<dBodyID> bodies;
   std::vector<dGeomID> geoms;
-  std::vector<GeomTag> fragment_tags;  // stable addresses: sized once
+  std::vector<GeomTag> fragment_tags;  // stable addresses, sized once
   GeomTag ground_tag{GeomKind::kGround, -1};
   GeomTag sensor_tag{GeomKind::kCameraSensor, -1};
   GeomTag wall_tag{GeomKind::kWall, -1};
@@ -335,8 +334,8 @@ struct World::Impl {
   int culled_total = 0;
   CameraPose camera;  // as placed for the coming step
   bool camera_placed = false;
-  // A culled fragment whose bounding sphere comes this close to the eye (plus its radius) is
-  // woken: the camera body's, or the wall's, farthest point from the eye.
+  // A culled fragment whose bounding sphere comes this close to the eye (plus its radius) is woken.
+  // It is the camera body's, or the wall's, farthest point from the eye.
   double wake_radius_m = 0.0;
 
   BodySnapshot before_step;  // every awake body before an exact step, to redo it if it fails
@@ -347,12 +346,12 @@ struct World::Impl {
     culled[i] = 1;
     ++culled_total;
     dBodyDisable(bodies[i]);
-    // As ODE's auto-disable does: a body that does not move reports no speed (a strategy would
-    // otherwise see a frozen fragment creeping at up to rest_linear_mps).
+    // As ODE's auto-disable does, a body that does not move reports no speed; otherwise a strategy
+    // would see a frozen fragment creeping at up to rest_linear_mps.
     dBodySetLinearVel(bodies[i], 0.0, 0.0, 0.0);
     dBodySetAngularVel(bodies[i], 0.0, 0.0, 0.0);
-    // With fragment collisions the geom must stay: another fragment must not pass through it
-    // (ODE wakes the body on such a contact).
+    // With fragment collisions the geom must stay, so that another fragment does not pass through
+    // it (ODE wakes the body on such a contact).
     if (!fragment_collisions) dGeomDisable(geoms[i]);
   }
   void uncull(std::size_t i) {
@@ -370,8 +369,8 @@ struct World::Impl {
     return d.squaredNorm() <= reach * reach;
   }
 
-  // Before collision detection, with the camera placed for the coming step: wakes culled
-  // fragments the camera or the wall could touch now, culls resting ones out of view and reach.
+  // Before collision detection, with the camera placed for the coming step, wakes culled fragments
+  // the camera or the wall could touch then and culls resting ones out of view and reach.
   void update_culling() {
     if (!camera_placed) return;
     const ViewVolume view(camera);
@@ -388,14 +387,14 @@ struct World::Impl {
     }
   }
 
-  // After a step: counts the steps each awake fragment has been at rest.
+  // After a step, counts the steps each awake fragment has been at rest.
   void count_rest() {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       if (culled[i]) {
         if (!dBodyIsEnabled(bodies[i])) continue;
-        uncull(i);  // ODE woke it: a fragment hit it (fragment collisions)
+        uncull(i);  // ODE woke it, so a fragment hit it (fragment collisions)
       }
-      if (!dBodyIsEnabled(bodies[i])) continue;  // asleep: still at rest
+      if (!dBodyIsEnabled(bodies[i])) continue;  // asleep, so still at rest
       const dReal* v = dBodyGetLinearVel(bodies[i]);
       const dReal* a = dBodyGetAngularVel(bodies[i]);
       const bool slow = v[0] * v[0] + v[1] * v[1] + v[2] * v[2] <= rest_linear2_mps2 &&
@@ -488,13 +487,13 @@ struct World::Impl {
       std::swap(a, b);
       std::swap(ta, tb);
     }
-    if (ta->kind != GeomKind::kFragment) return;  // two static geoms: never
+    if (ta->kind != GeomKind::kFragment) return;  // two static geoms make no contact
     if (tb->kind == GeomKind::kGround && skip_sleeping_ground && !dBodyIsEnabled(dGeomGetBody(a))) {
       return;
     }
     std::array<dContact, kMaxConvexContacts> contact{};
     if (tb->kind == GeomKind::kCameraSensor) {
-      // A sensor: record the touch, let the fragment pass through.
+      // A sensor records the touch and lets the fragment pass through.
       if (collide(a, ta, b, tb, 1, &contact[0].geom, sizeof(dContact)) > 0 &&
           !hit_flag[ta->fragment]) {
         hit_flag[ta->fragment] = 1;
@@ -506,10 +505,10 @@ struct World::Impl {
     const int n = collide(a, ta, b, tb, convex ? kMaxConvexContacts : kMaxContactsPerPair,
                           &contact[0].geom, sizeof(dContact));
     if (tb->kind == GeomKind::kWall && n > 0) {
-      // A fragment that begins the run inside the wall (a blast closer to the lens than the
-      // wall's distance) is let through until it is clear of it: pushed out from deep inside at
-      // ODE's correcting speed along a contact normal that turns with the spinning box, it would
-      // leave faster than anything threw it (the soak's seed 6751: 14 m/s out of a 2.7 m/s blast).
+      // A fragment that begins the run inside the wall (a blast closer to the lens than the wall's
+      // distance) is let through until it is clear of it. Pushed out from deep inside at ODE's
+      // correcting speed along a contact normal that turns with the spinning box, it would leave
+      // faster than anything threw it (the soak's seed 6751, 14 m/s out of a 2.7 m/s blast).
       const auto i = static_cast<std::size_t>(ta->fragment);
       if (first_step && !inside_wall_flag[i]) {
         inside_wall_flag[i] = 1;
@@ -550,14 +549,14 @@ struct World::Impl {
 World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<FragmentSpawn>& spawns)
     : impl_(std::make_unique<Impl>()) {
   ensure_ode();
-  // QuickStep shuffles constraints with ODE's global generator: seed it for every world.
+  // QuickStep shuffles constraints with ODE's global generator, so every world seeds it.
   dRandSetSeed(static_cast<unsigned long>(scene.sim.seed));
   Impl& w = *impl_;
-  check_masses(spawns);  // before ODE holds anything: a throw here leaks nothing
+  check_masses(spawns);  // before ODE holds anything, so a throw here leaks nothing
   w.fragment_collisions = scene.sim.fragment_collisions;
   w.convex_ground_contacts = std::clamp(scene.sim.convex_ground_contacts, 1, kMaxConvexContacts);
   // A wall joins every fragment touching it into one island, and the exact solver is cubic in an
-  // island's size (341 fragments on the wall: 3.6 s for one step, 0.011 s with QuickStep).
+  // island's size (341 fragments on the wall take 3.6 s for one step, 0.011 s with QuickStep).
   w.exact_solver =
       scene.sim.solver == Solver::kExact || (scene.sim.uses_exact_solver() && !needs.camera_wall);
   w.ground = scene.ground;
@@ -570,7 +569,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
   dWorldSetQuickStepNumIterations(w.world, scene.sim.solver_iterations);
   dWorldSetContactSurfaceLayer(w.world, 0.001);
   dWorldSetContactMaxCorrectingVel(w.world, 10.0);
-  // Bodies copy the world's auto-disable settings when they are created: set them first.
+  // Bodies copy the world's auto-disable settings when they are created, so those are set first.
   const SimulationDef& sim = scene.sim;
   w.auto_disable = sim.auto_disable;
   w.cull_resting = sim.cull_resting;
@@ -609,7 +608,7 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
     dMass mass;
     const Eigen::Vector3d size = 2.0 * s.half_extents_m;
     if (s.shape) {
-      // The body frame is the shape's: centre of mass at the origin.
+      // The body frame is the shape's, with the centre of mass at the origin.
       const double m = w.mass_scale * s.mass_kg;
       const Eigen::Matrix3d inertia_kgm2 = m * s.shape->inertia_per_kg_m2;
       dMassSetParameters(&mass, m, 0.0, 0.0, 0.0, inertia_kgm2(0, 0), inertia_kgm2(1, 1),
@@ -646,8 +645,8 @@ World::World(const Scene& scene, const WorldNeeds& needs, const std::vector<Frag
     c.mass_kg = s.mass_kg;
     if (s.shape) {
       // Every per-fragment test below and downstream that reads half extents or the radius (the
-      // view-volume cull and the camera's wake distance here; the metrics' boxes) reads a bound
-      // that holds the piece: conservative, never a miss.
+      // view-volume cull and the camera's wake distance here, the metrics' boxes) reads a bound
+      // that holds the piece, so it is conservative and never misses.
       c.shape = s.shape.get();
       c.half_extents_m = s.shape->half_extents_m;
       c.radius_m = s.shape->radius_m;
@@ -736,7 +735,7 @@ void World::add_forces(std::span<const AppliedForce> forces) {
   Impl& w = *impl_;
   for (const AppliedForce& f : forces) {
     const auto i = static_cast<std::size_t>(f.fragment);
-    // A disabled body ignores forces: wake it first.
+    // A disabled body ignores forces, so it is woken first.
     if (w.culled[i]) {
       w.uncull(i);
     } else if (!dBodyIsEnabled(w.bodies[i])) {

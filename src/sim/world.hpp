@@ -1,8 +1,8 @@
 #pragma once
-// The physics world: the only place that knows about ODE. Fragments are dynamic boxes or convex
-// pieces (FragmentSpawn::shape), the ground
-// a plane, the camera a kinematic body whose box is a sensor (touching it records a hit, nothing
-// bounces), and, when a strategy asks for one, a kinematic wall carried in front of the camera.
+// The physics world, the only place that knows about ODE. Fragments are dynamic boxes or convex
+// pieces (FragmentSpawn::shape), the ground a plane, the camera a kinematic body whose box is a
+// sensor (touching it records a hit, nothing bounces), and, when a strategy asks for one, a
+// kinematic wall carried in front of the camera.
 
 #include <memory>
 #include <span>
@@ -20,8 +20,8 @@ namespace fragsim {
 // What ODE does with a fragment this step.
 enum class FragmentActivity {
   kAwake,   // stepped and collided
-  kAsleep,  // at rest, disabled by ODE's auto-disable: not stepped, its geom still collides
-  // At rest, out of view and away from the camera: neither stepped nor collided (with fragment
+  kAsleep,  // at rest and disabled by ODE's auto-disable, so not stepped; its geom still collides
+  // At rest, out of view and away from the camera, so neither stepped nor collided (with fragment
   // collisions its geom stays, so that other fragments still meet it and wake it).
   kCulled,
 };

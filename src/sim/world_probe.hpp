@@ -1,6 +1,6 @@
 #pragma once
-// For tests only: what World handed ODE and what ODE's collision detection makes of a pair right
-// now, without stepping, so that tests need not include ODE.
+// For tests only, what World handed ODE and what ODE's collision detection makes of a pair at this
+// moment, without stepping, so that tests need not include ODE.
 
 #include <Eigen/Core>
 #include <vector>
@@ -24,9 +24,9 @@ struct ProbeMass {
 };
 
 struct WorldProbe {
-  // The contacts World::step would generate now between `fragment` and `target` (fragment
-  // `other` for kFragment; for the sensor, whether they touch: at most one). Empty if the world
-  // has no such geom.
+  // The contacts World::step would generate at this moment between `fragment` and `target`
+  // (fragment `other` for kFragment; for the sensor, whether they touch, at most one). Empty if the
+  // world has no such geom.
   static std::vector<ProbeContact> contacts(const World& world, int fragment, ProbeTarget target,
                                             int other = -1);
   // The mass ODE's body holds (dBodyGetMass).

@@ -66,7 +66,7 @@ bool command_for(SDL_Scancode code, PlayEvent& e) {
   }
 }
 
-// A variable set to an empty string names nothing: it counts as unset, as a shell's `VAR=` does
+// A variable set to an empty string names nothing, so it counts as unset, as a shell's `VAR=` does
 // for most programs (SDL itself then probes its drivers, down to those that draw nowhere).
 bool named_in_environment(const char* name) {
   const char* value = SDL_getenv(name);
@@ -78,7 +78,7 @@ bool named_in_environment(const char* name) {
 SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : title_(title) {
   // fragsim's own SIGINT/SIGTERM handling (io/atomic_file.hpp) stays in charge.
   SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-  // No display named and no driver asked for: say so in one line, before SDL probes its drivers
+  // With no display named and no driver asked for, say so in one line before SDL probes its drivers
   // (and a Wayland library prints its own complaints).
   if (!named_in_environment("SDL_VIDEODRIVER") && !named_in_environment("DISPLAY") &&
       !named_in_environment("WAYLAND_DISPLAY")) {
@@ -90,7 +90,7 @@ SdlWindow::SdlWindow(int width_px, int height_px, const std::string& title) : ti
     throw NoDisplay(std::string("no display to open a window on (SDL: ") + SDL_GetError() +
                     "); set DISPLAY, or run under Xvfb");
   }
-  // Without a display SDL falls back on drivers that draw nowhere ("offscreen", "dummy"): a
+  // Without a display SDL falls back on drivers that draw nowhere ("offscreen", "dummy"), and a
   // window nobody sees is no display, unless SDL_VIDEODRIVER asked for it.
   const char* driver = SDL_GetCurrentVideoDriver();
   const std::string name = driver ? driver : "";
@@ -163,7 +163,7 @@ void SdlWindow::show_status(const std::string& text) {
 
 void SdlWindow::present(const Image& frame) {
   SDL_Surface* target = SDL_GetWindowSurface(window_);
-  if (!target) return;  // minimised or being resized: nothing to draw on this time
+  if (!target) return;  // minimised or being resized, so nothing to draw on this time
   // The image's RGB rows as a surface without a copy; the blit converts to the window's format.
   SDL_Surface* src = SDL_CreateRGBSurfaceWithFormatFrom(
       const_cast<std::uint8_t*>(frame.bytes().data()), frame.width(), frame.height(), 24,

@@ -1,6 +1,6 @@
 #pragma once
-// The play window: SDL2 (Debian's libsdl2) opens it, shows the session's frames and maps the
-// keyboard and mouse to the session's controls. The only file that includes SDL.
+// The play window. SDL2 (Debian's libsdl2) opens it, shows the session's frames and maps the
+// keyboard and mouse to the session's controls. This is the only file that includes SDL.
 
 #include <stdexcept>
 #include <string>
@@ -37,7 +37,7 @@ class SdlWindow final : public PlayFrontend {
  private:
   SDL_Window* window_ = nullptr;
   std::string title_;
-  // What each movement key holds: +1 / -1 pairs, summed into HeldControls each poll.
+  // What each movement key holds, as +1 / -1 pairs summed into HeldControls each poll.
   bool down_[8] = {};
 };
 
