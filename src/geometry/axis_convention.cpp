@@ -3,7 +3,7 @@
 namespace fragsim {
 namespace {
 
-// -x without a negative zero: a file's 0 stays fragsim's 0, so a mirrored track prints and runs
+// -x without a negative zero, so a file's 0 stays fragsim's 0 and a mirrored track prints and runs
 // as the same track written in fragsim's frame.
 double negated(double x) {
   return -x + 0.0;

@@ -1,5 +1,5 @@
 #pragma once
-// A fragment's box seen from a camera: its centre, body axes and half axes in camera coordinates,
+// A fragment's box seen from a camera, its centre, body axes and half axes in camera coordinates,
 // its 8 corners, and its extents along the camera's axes. The occlusion raster, the renderer and
 // the swept near-plane tests all take the box from here.
 
@@ -12,7 +12,7 @@
 
 namespace fragsim {
 
-// A fragment's box in camera coordinates (not a camera: the fragment as the camera sees it).
+// A fragment's box in camera coordinates (not a camera, but the fragment as the camera sees it).
 struct CameraBox {
   Eigen::Vector3d centre_m = Eigen::Vector3d::Zero();
   Eigen::Matrix3d dirs = Eigen::Matrix3d::Identity();     // the body axes (unit columns)
@@ -52,8 +52,8 @@ inline CameraBox camera_box(const CameraPose& camera, const FragmentState& f) {
 }
 
 // Half extents along the camera's right, up and forward axes of a fragment's (rotated) box. Its
-// own product rather than |half_axes_m| summed per row: the swept tests' results were computed
-// with this one, and the two sum in different orders.
+// own product rather than |half_axes_m| summed per row, as the swept tests' results rest on this
+// one and the two sum in different orders.
 inline Eigen::Vector3d camera_aligned_extents(const CameraPose& camera, const FragmentState& f) {
   Eigen::Matrix3d to_cam;
   to_cam.row(0) = camera.right.transpose();

@@ -1,7 +1,7 @@
 #pragma once
-// A convex fragment (FragmentState::shape) seen from a camera: its vertices in camera coordinates
+// A convex fragment (FragmentState::shape) seen from a camera, its vertices in camera coordinates
 // and its exact extents along the camera's axes, the counterpart of camera_box.hpp for hulls. Box
-// fragments keep camera_box.hpp: their results were computed with it and must not move.
+// fragments keep camera_box.hpp, so their results stay the same to the bit.
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -13,7 +13,7 @@
 
 namespace fragsim {
 
-// The world-to-camera rotation times the body's: body-frame vectors to camera axes.
+// The world-to-camera rotation times the body's (body-frame vectors to camera axes).
 inline Eigen::Matrix3d body_to_camera(const CameraPose& camera, const Eigen::Matrix3d& rotation) {
   Eigen::Matrix3d to_cam;
   to_cam.row(0) = camera.right.transpose();
@@ -23,7 +23,7 @@ inline Eigen::Matrix3d body_to_camera(const CameraPose& camera, const Eigen::Mat
 }
 
 // How far the hull reaches from its centre of mass along +x, +y, +z of the camera (plus_m) and
-// along -x, -y, -z (minus_m): its camera-aligned bounding box, exact (attained by a vertex), and
+// along -x, -y, -z (minus_m), its camera-aligned bounding box, exact (attained by a vertex) and
 // inside the one its body box gives. (A fragment's extents, as CameraBox is its box.)
 struct CameraExtents {
   Eigen::Vector3d plus_m = Eigen::Vector3d::Zero();

@@ -1,5 +1,5 @@
 #pragma once
-// What moving the near plane costs: a perspective depth buffer spends its precision near the
+// What moving the near plane costs. A perspective depth buffer spends its precision near the
 // eye, so pulling the near plane in coarsens every depth behind it (thesis fig. 2.6). Shared by
 // `near-plane`, which trades it, and the metrics, which report it.
 

@@ -1,6 +1,6 @@
 #pragma once
 // A body's orientation as a unit quaternion, the form trajectories.csv and the bake
-// (report/gltf_bake.hpp) write: from the rotation matrix a snapshot holds (FragmentState::rotation,
+// (report/gltf_bake.hpp) write, from the rotation matrix a snapshot holds (FragmentState::rotation,
 // body axes as columns in world; CameraPose::rotation()).
 
 #include <Eigen/Core>
@@ -9,7 +9,7 @@
 namespace fragsim {
 
 // The unit quaternion of the rotation whose columns are `axes` (orthonormal to rounding, as ODE's
-// matrices are), with w >= 0: one of the two quaternions of every rotation, always the same one.
+// matrices are), with w >= 0, so it is always the same one of every rotation's two quaternions.
 inline Eigen::Quaterniond orientation_quaternion(const Eigen::Matrix3d& axes) {
   Eigen::Quaterniond q(axes);
   q.normalize();

@@ -39,10 +39,9 @@ SweepEnd sweep_end(const CameraPose& camera, const FragmentState& f) {
 namespace {
 
 // Adds -limit_plus(s) <= x(s) <= limit_minus(s), with x and both limits linear between the two
-// ends: x is the centre's offset from a target, limit_minus how far the target reaches beyond it
+// ends. x is the centre's offset from a target, limit_minus how far the target reaches beyond it
 // plus how far the piece reaches toward -x (so its low side is not past the target's high side),
-// limit_plus the same on the other side. For a box both are equal and this is |x| <= limit, in
-// the same operations as ever.
+// limit_plus the same on the other side. For a box both are equal, giving exactly |x| <= limit.
 void keep_within(LinearInterval& iv, double x0, double x1, double lim_minus0, double lim_minus1,
                  double lim_plus0, double lim_plus1) {
   iv.keep_nonpositive(x0 - lim_minus0, (x1 - lim_minus1) - (x0 - lim_minus0));
@@ -57,10 +56,10 @@ std::optional<double> sweep_meets_near_rectangle(const SweepEnd& a, const SweepE
   const Eigen::Vector3d ep = a.extents_m.cwiseMax(b.extents_m);
   const Eigen::Vector3d em = a.extents_minus_m.cwiseMax(b.extents_minus_m);
   LinearInterval iv;
-  // Depth: the piece spans the near plane.
+  // In depth, the piece spans the near plane.
   keep_within(iv, a.centre_m.z() - a.near_m, b.centre_m.z() - b.near_m, em.z(), em.z(), ep.z(),
               ep.z());
-  // Across: the piece reaches into the rectangle.
+  // Across, the piece reaches into the rectangle.
   keep_within(iv, a.centre_m.x(), b.centre_m.x(), a.near_half_width_m + em.x(),
               b.near_half_width_m + em.x(), a.near_half_width_m + ep.x(),
               b.near_half_width_m + ep.x());
@@ -77,7 +76,7 @@ double cross2(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::V
   return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Andrew's monotone chain: p's hull, counter-clockwise, without collinear points (1 or 2 points
+// p's hull by Andrew's monotone chain, counter-clockwise, without collinear points (1 or 2 points
 // when degenerate). Sorts p.
 void convex_hull_2d(std::vector<Eigen::Vector2d>& p, std::vector<Eigen::Vector2d>& hull) {
   std::sort(p.begin(), p.end(), [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {

@@ -5,7 +5,7 @@
 // step fraction s, so the overlap interval is exact for that motion (a fast fragment cannot jump a
 // thin target). A convex piece (FragmentState::shape) is bounded the same way by its hull's own
 // camera-aligned box (geometry/camera_hull.hpp), which reaches as far as its farthest vertex on
-// each side of each axis and no further: tighter than its body box, still conservative for the
+// each side of each axis and no further, tighter than its body box yet conservative for the
 // polytope itself (where the hull's extreme vertex along one axis is not at the near plane's
 // depth, or lies beyond the rectangle along the other). HullSweep below is the exact test of the
 // polytope, for what that box flags.
@@ -35,8 +35,8 @@ class LinearInterval {
   double hi_ = 1.0;
 };
 
-// One end of a sweep: the fragment's centre in that snapshot's camera frame, how far it reaches
-// from the centre along the camera's +x, +y, +z (extents_m) and -x, -y, -z (extents_minus_m: the
+// One end of a sweep, the fragment's centre in that snapshot's camera frame, how far it reaches
+// from the centre along the camera's +x, +y, +z (extents_m) and -x, -y, -z (extents_minus_m, the
 // same as extents_m for a box, not for a hull), and that snapshot's near distance and near half
 // sizes.
 struct SweepEnd {
@@ -55,16 +55,16 @@ SweepEnd sweep_end(const CameraPose& camera, const FragmentState& f);
 std::optional<double> sweep_meets_near_rectangle(const SweepEnd& a, const SweepEnd& b);
 
 // The exact near-rectangle test of a convex piece (FragmentState::shape) over a step, for the
-// swept test's motion: the centre on the straight line between its camera-space positions, and
+// swept test's motion, the centre on the straight line between its camera-space positions and
 // about it the hull of the piece's vertices in both end orientations (so a piece that does not
 // turn within the step is the polytope itself, translated; one that turns is bounded by both its
 // end poses, as the box's extents bound a box). Exact where sweep_meets_near_rectangle bounds the
-// hull by its camera-aligned box, which is what the metrics ask first, so this runs only on the
-// few pieces that box already flags.
+// hull by its camera-aligned box, which the metrics ask first, so this runs only on the few pieces
+// that box flags.
 //
-// How: in (s, x, y, z) the swept piece is the convex hull of its vertices at s = 0 and at s = 1;
-// the near plane z = near(s) cuts it in the hull of the points where the segments between those
-// vertices cross the plane; dividing x and y by near(s) (a projective map, so hulls stay hulls)
+// In (s, x, y, z) the swept piece is the convex hull of its vertices at s = 0 and at s = 1. The
+// near plane z = near(s) cuts it in the hull of the points where the segments between those
+// vertices cross the plane. Dividing x and y by near(s) (a projective map, so hulls stay hulls)
 // makes the near rectangle one fixed rectangle, and the test is a 2-D separating-axis one.
 // Holds its scratch, so a metric that keeps one allocates nothing once it has grown.
 class HullSweep {

@@ -33,7 +33,7 @@ int claim_slot(const std::string& path, bool is_folder) {
       return static_cast<int>(i);
     }
   }
-  return -1;  // untracked: only an interrupt's cleanup misses it
+  return -1;  // untracked, so only an interrupt's cleanup misses it
 }
 
 void release_slot(int slot) {
@@ -45,8 +45,8 @@ extern "C" void on_interrupt(int sig) {
     if (g_slot_used[i].load() && !g_slot_is_folder[i]) ::unlink(g_slot_path[i].data());
   }
   // A nested folder empties its parent only once it is gone itself, and slots are in no
-  // particular order: one pass per possible level removes every empty one. rmdir leaves a folder
-  // that still holds anything.
+  // particular order, so one pass per possible level removes every empty one. rmdir leaves a
+  // folder that holds anything.
   for (std::size_t pass = 0; pass < kMaxLive; ++pass) {
     for (std::size_t i = 0; i < kMaxLive; ++i) {
       if (g_slot_used[i].load() && g_slot_is_folder[i]) ::rmdir(g_slot_path[i].data());
@@ -71,7 +71,7 @@ void remove_temporaries_on_interrupt() {
 AtomicFile::AtomicFile(std::string path)
     : path_(std::move(path)), temp_path_(path_ + ".tmp." + std::to_string(::getpid())) {
   // A folder in the way would only show when renaming, after other files of the same output are
-  // in place: refuse it before anything is written.
+  // in place, so refuse it before anything is written.
   std::error_code ec;
   if (std::filesystem::is_directory(path_, ec)) throw std::runtime_error(path_ + ": is a folder");
   slot_ = claim_slot(temp_path_, false);

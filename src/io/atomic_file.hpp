@@ -1,6 +1,6 @@
 #pragma once
-// An output file that appears whole or not at all: written to a temporary file in the same folder
-// and renamed over the target on commit(). Destroyed without commit (an exception, an early
+// An output file that appears whole or not at all, being written to a temporary file in the same
+// folder and renamed over the target on commit(). Destroyed without commit (an exception, an early
 // return), it removes the temporary file and leaves any old target untouched.
 
 #include <fstream>
@@ -19,7 +19,7 @@ class AtomicFile {
   std::ostream& out() { return out_; }
   // Flushes and closes the temporary file, and checks every write succeeded; throws naming the
   // path if not (a full disk shows here). Commit calls it; a set of files calls it on each before
-  // renaming any (OutputSet), so that a failure leaves none of them in place.
+  // renaming any (OutputSet), so a failure leaves none of them in place.
   void finish();
   // Finishes (if not yet) and renames into place; throws naming the path if either fails.
   void commit();
@@ -35,7 +35,7 @@ class AtomicFile {
 };
 
 // On SIGINT or SIGTERM, removes every temporary file of a live AtomicFile, then dies of the
-// signal: an interrupted run leaves the old files or none, and no debris. (SIGKILL
+// signal, so an interrupted run leaves the previous files or none, and no debris. (SIGKILL
 // cannot be caught; its debris is named PATH.tmp.PID.) Call once, from main.
 void remove_temporaries_on_interrupt();
 

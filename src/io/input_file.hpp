@@ -1,5 +1,5 @@
 #pragma once
-// The one door every input file comes through (scene files, camera tracks): a path that is a
+// The one door every input file comes through (scene files, camera tracks). A path that is a
 // directory, cannot be opened or cannot be read is named in one line, and a UTF-8 byte-order mark
 // (as some Windows editors save) is dropped so it is not glued to the first key or column name.
 

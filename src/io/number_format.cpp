@@ -20,13 +20,13 @@ std::string format_double(double v) {
 std::string fixed_text(double v, int decimals) {
   if (std::isnan(v)) return "nan";
   if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  // DBL_MAX has 309 digits before the point: with room for the decimals, no value fails.
+  // DBL_MAX has 309 digits before the point, so with room for the decimals no value fails.
   char buf[309 + 2 + 64];
   if (decimals < 0) decimals = 0;
   if (decimals > 64) decimals = 64;
   const auto res = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
   std::string text(buf, res.ptr);
-  // Strip the sign from a rounded zero after rounding, not by a threshold before it: only the
+  // Strip the sign from a rounded zero after rounding, not by a threshold before it, as only the
   // digits know whether the value rounded to zero.
   if (!text.empty() && text.front() == '-' &&
       text.find_first_not_of("0.", 1) == std::string::npos) {

@@ -1,7 +1,7 @@
 #pragma once
-// Numbers as text, the one place that decides how: the terminal, the HTML page and every CSV file
-// format through these, so one value reads the same wherever it is shown. std::to_chars (no
-// locale, the same text on every platform) throughout.
+// Numbers as text, the one place that decides how. The terminal, the HTML page and every CSV file
+// format through these, so one value reads the same wherever it is shown. All use std::to_chars
+// (no locale, the same text on every platform).
 
 #include <string>
 
@@ -12,10 +12,10 @@ namespace fragsim {
 void append_double(std::string& out, double v);
 std::string format_double(double v);
 
-// `decimals` digits after the point, rounded from the double's exact value with ties to even
-// (what printf's "%.*f" prints). Never "-0.0": a negative that rounds to zero prints without a
-// sign, so a solver's -1e-17 reads as the 0 it stands for. NaN prints "nan" (whatever its sign
-// bit), infinities "inf" and "-inf".
+// `decimals` digits after the point, rounded from the double's exact value with ties to even (what
+// printf's "%.*f" prints). A negative that rounds to zero prints without a sign (never "-0.0"), so
+// a solver's -1e-17 reads as the 0 it stands for. NaN prints "nan" (whatever its sign bit),
+// infinities "inf" and "-inf".
 std::string fixed_text(double v, int decimals);
 
 // A share (0.25) as a percentage with `decimals` digits ("25.0"), rounded as fixed_text.

@@ -18,7 +18,7 @@ OutputFolder::OutputFolder(const std::string& dir, bool force) : dir_(dir) {
     }
     return;
   }
-  // One level at a time, outermost first, so that each folder made here is known and can go.
+  // One level at a time, outermost first, so each folder made here is known and can go.
   fs::path deepest = fs::path(dir).lexically_normal();
   if (!deepest.has_filename()) deepest = deepest.parent_path();  // "out/" names "out"
   std::vector<fs::path> missing;

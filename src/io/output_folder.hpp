@@ -19,7 +19,7 @@ class OutputFolder {
   OutputFolder& operator=(const OutputFolder&) = delete;
 
   const std::string& path() const { return dir_; }
-  // The output is complete: the folder stays.
+  // The output is complete, so the folder stays.
   void keep();
 
  private:

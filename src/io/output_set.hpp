@@ -1,8 +1,8 @@
 #pragma once
-// Files that appear together or not at all: a run's CSV files, its report, its bakes. Each is
+// Files that appear together or not at all (a run's CSV files, its report, its bakes). Each is
 // written to a temporary file (AtomicFile); commit() first checks that every one was written whole,
 // and only then renames them into place, so a full disk part way leaves none of the new files and
-// every old one as it was.
+// every earlier one as it was.
 
 #include <cstddef>
 #include <memory>

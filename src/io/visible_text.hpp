@@ -1,5 +1,5 @@
 #pragma once
-// Text from an input quoted into a message, made visible: a NUL byte would end the message where
+// Text from an input quoted into a message, made visible. A NUL byte would end the message where
 // it stands (what() is a C string) and other control characters garble the terminal, so each is
 // written as an escape (\x00, \t, \r, \x1b). Every message that quotes what a file held goes
 // through here.

@@ -1,5 +1,5 @@
 #pragma once
-// Wall time per step of the physics and of the strategy, apart: median and 95th percentile.
+// Wall time per step of the physics and of the strategy, apart, as median and 95th percentile.
 // The only metric that differs between two runs of the same scene.
 
 #include <vector>

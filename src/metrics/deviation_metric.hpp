@@ -1,6 +1,6 @@
 #pragma once
-// Trajectory deviation (docs/method.md section 6): each fragment's distance to the same fragment of
-// the reference run (the `none` run of the same scene and seed) at the same step. A fragment's
+// Trajectory deviation (docs/method.md section 6) is each fragment's distance to the same fragment
+// of the reference run (the `none` run of the same scene and seed) at the same step. A fragment's
 // deviation is the largest such distance over the run, step 0 included.
 
 #include <vector>

@@ -34,8 +34,8 @@ bool on_screen(const CameraPose& camera, const Eigen::Vector3d& c_m) {
          std::abs(c_m.y()) <= camera.half_height_at(z);
 }
 
-// The exit of a fragment now off screen at camera-space centre c_m. Past the far plane no border
-// is crossed; it is then put on the border it is closest to, which is what the same rule gives.
+// The exit of a fragment off screen at camera-space centre c_m. Past the far plane no border is
+// crossed; it goes on the border it is closest to, as the same rule gives.
 Exit classify(const CameraPose& camera, const Eigen::Vector3d& c_m) {
   const double z = c_m.z();
   if (z < camera.near_m) return Exit::kNear;
@@ -85,7 +85,7 @@ void ExitMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
 bool ExitMetric::meets_near(const CameraPose& camera_a, const FragmentState& a,
                             const CameraPose& camera_b, const FragmentState& b, const SweepEnd& ea,
                             const SweepEnd& eb) {
-  // The hull's box first: it is cheap and clears all but the pieces at the lens.
+  // The hull's box first, as it is cheap and clears all but the pieces at the lens.
   if (!sweep_meets_near_rectangle(ea, eb)) return false;
   return !b.shape || hull_sweep_.meets_near_rectangle(camera_a, a, camera_b, b);
 }

@@ -1,14 +1,14 @@
 #pragma once
 // Exits and near misses (docs/method.md section 6). A fragment is on screen when its centre lies in
 // the view frustum of that snapshot's camera. When it goes from on screen to off screen between two
-// snapshots its exit is the near plane (its depth is now short of the near distance, or behind the
+// snapshots its exit is the near plane (its depth is then short of the near distance, or behind the
 // eye) or else the border its centre is furthest past; a later re-entry and exit replaces the
 // earlier one. A near miss is a centre path passing within near_miss_m of the eye by a fragment
-// whose box (a convex piece: the polytope for the near rectangle, its hull's camera-aligned box
-// for the camera body, never its looser body box) never met the near rectangle or the camera body
-// (swept_box.hpp, or the physics' sensor): the fly-by that makes the shot, as opposed to a clip.
+// whose box (for a convex piece, the polytope for the near rectangle and its hull's camera-aligned
+// box for the camera body, never its looser body box) never met the near rectangle or the camera
+// body (swept_box.hpp, or the physics' sensor). That is the fly-by that makes the shot, not a clip.
 // The centre is a convex piece's centre of mass. The same exits are also counted over the pushed
-// fragments alone (any force in any step): a strategy changes only their exits, so their shares
+// fragments alone (any force in any step), as a strategy changes only their exits, so their shares
 // show where it sends debris (edge-min.edge_weights).
 
 #include <string_view>
@@ -21,7 +21,7 @@
 
 namespace fragsim {
 
-// How a fragment left the screen. kNone: never on screen; kStayed: on screen at the last snapshot.
+// How a fragment left the screen. kNone is never on screen, kStayed on screen at the last snapshot.
 enum class Exit { kNone, kTop, kBottom, kLeft, kRight, kNear, kStayed };
 
 // Lower-case name for CSV columns: "none", "top", "bottom", "left", "right", "near", "stayed".
@@ -51,7 +51,7 @@ class ExitMetric final : public RunObserver {
   bool pushed(int fragment) const { return pushed_[static_cast<std::size_t>(fragment)] != 0; }
 
  private:
-  // Whether the piece met the near rectangle between the two snapshots (ea, eb: its sweep ends).
+  // Whether the piece met the near rectangle between the two snapshots (its sweep ends ea, eb).
   bool meets_near(const CameraPose& camera_a, const FragmentState& a, const CameraPose& camera_b,
                   const FragmentState& b, const SweepEnd& ea, const SweepEnd& eb);
 

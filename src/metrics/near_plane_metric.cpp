@@ -31,7 +31,7 @@ void NearPlaneMetric::observe(const StepSnapshot& snap) {
     const FragmentState& f = snap.fragments[i];
     const SweepEnd now = sweep_end(snap.camera, f);
     const float opacity = translucent ? snap.opacity[i] : 1.0f;
-    // The hull's box first: it is cheap and clears all but the pieces at the lens.
+    // The hull's box first, as it is cheap and clears all but the pieces at the lens.
     if (sweep_meets_near_rectangle(prev_[i], now) &&
         (!f.shape ||
          hull_sweep_.meets_near_rectangle(prev_camera_, prev_state_[i], snap.camera, f))) {

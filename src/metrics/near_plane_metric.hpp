@@ -1,15 +1,15 @@
 #pragma once
 // Near-plane intersections and camera hits (docs/method.md section 6). A fragment intersects the
-// near plane in a step when its box (a convex piece: the polytope itself, swept_box.hpp's
+// near plane in a step when its box (for a convex piece, the polytope itself, swept_box.hpp's
 // HullSweep) meets the near rectangle at any time during the step's motion (swept_box.hpp), tested
 // with that step's near distance; a camera hit is a touch of the camera body, reported by the
 // physics' sensor or found by the same swept test (for a convex piece, with its hull's
-// camera-aligned box: conservative).
+// camera-aligned box, conservatively).
 //
-// A frame with opacities (the `fade` strategy): a fragment invisible (opacity 0) at the start or
+// In a frame with opacities (the `fade` strategy), a fragment invisible (opacity 0) at the start or
 // the end of the step in which it meets the near rectangle is drawn neither cut nor whole, so it
 // is no near-plane intersection; it is counted among the vanished (vanished_metric.hpp) instead.
-// Camera hits stay what they are: the fragment still flies into the camera's body.
+// Camera hits still count, as the fragment still flies into the camera's body.
 
 #include <vector>
 
@@ -47,7 +47,7 @@ class NearPlaneMetric final : public RunObserver {
   std::vector<char> near_hit_;
   std::vector<char> body_hit_;
   std::vector<char> near_invisible_;
-  std::vector<float> prev_opacity_;  // each fragment's in the last snapshot (1: opaque)
+  std::vector<float> prev_opacity_;  // each fragment's in the last snapshot (1 is opaque)
   std::vector<int> per_step_;
   std::vector<int> last_step_;
   int fragment_steps_ = 0;

@@ -20,14 +20,14 @@ namespace {
 // A box cut by one plane keeps at most 7 corners and gains at most 6 cut points; uncut it has 8.
 constexpr int kMaxPoints = 14;
 
-// Twice the signed area of the triangle o, a, b (> 0: a counter-clockwise turn in a y-up frame).
+// Twice the signed area of the triangle o, a, b, > 0 for a counter-clockwise turn in a y-up frame.
 double cross(const ScreenPoint& o, const ScreenPoint& a, const ScreenPoint& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
 }
 
 // Andrew's monotone chain over p[0..n), which it sorts in place. Writes the hull's vertices,
 // without collinear points or a repeated first vertex, to hull (room for 2 n) and returns their
-// count: 1 or 2 for a degenerate hull. Insertion sort, because n <= 14 for a box, a few dozen for
+// count (1 or 2 for a degenerate hull). Insertion sort, because n <= 14 for a box, a few dozen for
 // a hull, and nothing may allocate.
 int convex_hull(ScreenPoint* p, int n, ScreenPoint* hull) {
   for (int i = 1; i < n; ++i) {
@@ -55,7 +55,7 @@ int convex_hull(ScreenPoint* p, int n, ScreenPoint* hull) {
   return k - 1;  // the last vertex repeats the first
 }
 
-// Where a fragment paints: the coverage mask, and for a translucent frame also each pixel's
+// Where a fragment paints, the coverage mask and for a translucent frame also each pixel's
 // transmittance, the product of (1 - alpha) over the fragments covering it, multiplied by `keep`
 // (1 - this fragment's alpha). Opaque frames leave `transmittance` null and only mark the mask.
 struct Paint {
@@ -89,7 +89,7 @@ int fill_hull(const ScreenPoint* hull, int n, int width_px, int height_px, const
       const ScreenPoint& a = hull[i];
       const ScreenPoint& b = hull[i + 1 == n ? 0 : i + 1];
       if ((yc < a.y && yc < b.y) || (yc > a.y && yc > b.y)) continue;
-      if (a.y == b.y) {  // a horizontal edge on the centre line: all of it is inside
+      if (a.y == b.y) {  // a horizontal edge on the centre line is all inside
         x_lo = std::min(x_lo, std::min(a.x, b.x));
         x_hi = std::max(x_hi, std::max(a.x, b.x));
       } else {
@@ -141,7 +141,7 @@ int rasterise(const Projection& pr, const CameraPose& camera, const FragmentStat
   const Eigen::Vector3d& c = box.centre_m;
   const Eigen::Matrix3d& axes = box.half_axes_m;
 
-  // Cheap culling: the box lies wholly on the outer side of the near plane or of a side plane
+  // Cheap culling. The box lies wholly on the outer side of the near plane or of a side plane
   // (n . p > d for all its points) when n . c - sum_k |n . axis_k| > d.
   const auto outside = [&](const Eigen::Vector3d& n, double d) {
     return n.dot(c) - (axes.transpose() * n).cwiseAbs().sum() > d;
@@ -193,7 +193,7 @@ int rasterise_hull(const Projection& pr, const CameraPose& camera, const Fragmen
   for (const Eigen::Vector3d& v : cam_vertices) {
     if (!v.allFinite()) return 0;  // reported by the simulation's own checks
   }
-  // Cheap culling: every vertex on the outer side of the near plane or of one side plane.
+  // Cheap culling if every vertex is on the outer side of the near plane or of one side plane.
   const auto outside = [&](const Eigen::Vector3d& n, double d) {
     for (const Eigen::Vector3d& v : cam_vertices) {
       if (!(n.dot(v) > d)) return false;
@@ -205,7 +205,7 @@ int rasterise_hull(const Projection& pr, const CameraPose& camera, const Fragmen
       outside({0.0, 1.0, -pr.tan_y}, 0.0) || outside({0.0, -1.0, -pr.tan_y}, 0.0)) {
     return 0;
   }
-  // As for the box: the part with z >= near is spanned by the vertices in front of the plane and
+  // As for the box, the part with z >= near is spanned by the vertices in front of the plane and
   // the points where the hull's edges cross it.
   points.clear();
   for (const Eigen::Vector3d& v : cam_vertices) {
@@ -216,7 +216,7 @@ int rasterise_hull(const Projection& pr, const CameraPose& camera, const Fragmen
       for (std::size_t k = 0; k < face.size(); ++k) {
         const int ia = face[k];
         const int ib = face[k + 1 == face.size() ? 0 : k + 1];
-        // Every edge borders two faces, once in each direction: take it once.
+        // Every edge borders two faces, once in each direction, so take it once.
         if (ia > ib) continue;
         const Eigen::Vector3d& a = cam_vertices[static_cast<std::size_t>(ia)];
         const Eigen::Vector3d& b = cam_vertices[static_cast<std::size_t>(ib)];
@@ -271,9 +271,9 @@ void OcclusionMetric::observe(const StepSnapshot& snap) {
   std::fill(coverage_.begin(), coverage_.end(), std::uint8_t{0});
   const double pixels = static_cast<double>(coverage_.size());
   const Projection pr = make_projection(snap.camera, width_px_, height_px_);
-  // A frame with opacities (fade) composites: a pixel is covered by 1 - prod(1 - alpha) of the
-  // fragments over it, and a fragment's own share counts by its alpha. Without them the mask
-  // alone is counted, as it always was, so opaque runs keep their numbers to the bit.
+  // A frame with opacities (fade) composites. A pixel is covered by 1 - prod(1 - alpha) of the
+  // fragments over it, and a fragment's own share counts by its alpha. Without opacities the mask
+  // alone is counted, so an opaque run's numbers are plain coverage to the bit.
   const bool translucent = !snap.opacity.empty();
   assert(!translucent || snap.opacity.size() == snap.fragments.size());
   if (translucent) transmittance_.assign(coverage_.size(), 1.0);
@@ -285,7 +285,7 @@ void OcclusionMetric::observe(const StepSnapshot& snap) {
     double alpha = 1.0;
     if (translucent) {
       alpha = snap.opacity[i];
-      if (!(alpha > 0.0)) continue;  // invisible: nothing is drawn
+      if (!(alpha > 0.0)) continue;  // invisible, so nothing is drawn
       paint.transmittance = transmittance_.data();
       paint.keep = 1.0 - alpha;
     }

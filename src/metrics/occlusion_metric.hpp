@@ -1,18 +1,19 @@
 #pragma once
 // Screen occlusion (docs/method.md section 6). After every step each fragment's box (or, for a
-// convex piece, its hull: the vertices and the points where its edges cross the plane) is clipped
-// at the near plane in force then, projected, and its 2-D convex hull rasterised on a pixel grid;
-// the covered share of the viewport and of a central region (where the action is) form per-step
-// series, summarised as mean and max over the run, with the largest share one fragment covered.
+// convex piece, its hull, i.e. the vertices and the points where its edges cross the plane) is
+// clipped at the near plane in force then, projected, and its 2-D convex hull rasterised on a pixel
+// grid; the covered share of the viewport and of a central region (where the action is) form
+// per-step series, summarised as mean and max over the run, with the largest share one fragment
+// covered.
 //
-// Raster: grid_width_px columns and max(1, round(width / aspect)) rows; pixel (col, row) spans
-// [col, col + 1] x [row, row + 1] with x to the right and y DOWN (row 0 is the top of the screen),
-// the viewport [-1, 1]^2 in NDC mapping onto [0, width] x [0, height]. A pixel is covered when its
-// centre lies inside the hull or on its boundary (closed hull). Only the near plane and the side
-// planes clip; the far plane does not (a fragment beyond it is a speck, not an occluder).
+// The raster has grid_width_px columns and max(1, round(width / aspect)) rows; pixel (col, row)
+// spans [col, col + 1] x [row, row + 1] with x to the right and y DOWN (row 0 is the top of the
+// screen), the viewport [-1, 1]^2 in NDC mapping onto [0, width] x [0, height]. A pixel is covered
+// when its centre lies inside the hull or on its boundary (closed hull). Only the near plane and
+// the side planes clip; the far plane does not (a fragment beyond it is a speck, not an occluder).
 //
 // A frame with opacities (StepSnapshot::opacity, the `fade` strategy) counts each fragment by
-// its alpha: a pixel is covered by 1 - prod(1 - alpha) over the fragments whose hull holds its
+// its alpha. A pixel is covered by 1 - prod(1 - alpha) over the fragments whose hull holds its
 // centre (what blending them in any order gives), and the largest share one fragment covered is
 // its pixels times its alpha. An invisible fragment (alpha 0) covers nothing.
 
@@ -33,7 +34,7 @@ class OcclusionMetric final : public RunObserver {
 
   void begin(const RunInfo& info, const StepSnapshot& initial) override;
   void observe(const StepSnapshot& snap) override;
-  // Sets the occlusion_* fields: mean and max over steps 1..N of the per-step shares, and the
+  // Sets the occlusion_* fields to the mean and max over steps 1..N of the per-step shares, and the
   // largest share one fragment covered in any of those steps (0 for a run without steps).
   void fill(RunSummary& summary) const;
 
@@ -66,7 +67,7 @@ class OcclusionMetric final : public RunObserver {
   int central_y0_ = 0;
   int central_y1_ = 0;
   std::vector<std::uint8_t> coverage_;          // reused every step, so a step allocates nothing
-  std::vector<double> transmittance_;           // per pixel, prod(1 - alpha): translucent frames
+  std::vector<double> transmittance_;           // prod(1 - alpha) per pixel, for translucent frames
   std::vector<Eigen::Vector3d> hull_vertices_;  // a convex piece's, in camera space (scratch)
   std::vector<ScreenPoint> hull_points_;        // its clipped, projected points and hull (scratch)
   std::vector<double> viewport_share_;

@@ -21,7 +21,7 @@ SummaryField field(const char* name, Part RunSummary::*part, T Part::*member) {
 std::string cell(const RunSummary& s, const SummaryField& c) {
   return std::visit(
       [&s](const auto& get) -> std::string {
-        // Read only: the getter takes a RunSummary& so one table serves reading and writing.
+        // Only read here; the getter takes a RunSummary& so one table serves reading and writing.
         const auto& v = *get(const_cast<RunSummary&>(s));
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, std::string>) {

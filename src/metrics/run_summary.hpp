@@ -1,5 +1,5 @@
 #pragma once
-// One run's headline numbers: a row of the comparison table and of summary.csv, in parts by
+// One run's headline numbers, a row of the comparison table and of summary.csv, in parts by
 // concern. Each metric observer fills its own part.
 
 #include <cstdint>
@@ -28,7 +28,7 @@ struct DeviationStats {
   double deviated_share = 0.0;  // share of fragments moved more than 1 cm
 };
 
-// Screen occlusion (occlusion_metric): covered share of the viewport and of the central region.
+// Screen occlusion (occlusion_metric), the covered share of the viewport and of the central region.
 struct OcclusionStats {
   double mean = 0.0;
   double max = 0.0;
@@ -60,7 +60,7 @@ struct ActivityTotals {
   double impulse_Ns = 0.0;      // sum of |F| dt over the run
   double max_accel_mps2 = 0.0;  // largest imposed acceleration
   int wall_contacts = 0;        // contact points with the wall (wall)
-  double min_near_m = 0.0;      // smallest near distance used (near-plane: pulled in)
+  double min_near_m = 0.0;      // smallest near distance used (near-plane pulls it in)
   double depth_step_m = 0.0;    // depth resolution at the reference distance with min_near_m
 };
 
@@ -70,7 +70,7 @@ struct PhysicsHealth {
   int nonfinite_fragments = 0;  // fragments whose state became non-finite (frozen, counted)
 };
 
-// Wall time (cost_metric): the only part that differs between two runs of the same scene.
+// Wall time (cost_metric), the only part that differs between two runs of the same scene.
 struct RunCost {
   double physics_ms_median = 0.0;
   double physics_ms_p95 = 0.0;
@@ -91,7 +91,7 @@ struct RunSummary {
   DeviationStats deviation;
   OcclusionStats occlusion;
   ExitCounts exits;
-  // The exits of the pushed fragments only (those that got any force): where a push sent them. A
+  // The exits of the pushed fragments only (those that got any force), where a push sent them. A
   // pushed fragment never on screen is in none of these.
   ExitCounts pushed_exits;
   ActivityTotals activity;
@@ -99,8 +99,8 @@ struct RunSummary {
   RunCost cost;
 };
 
-// summary.csv's columns in order: each one's header and where in RunSummary its value is. The
-// one list behind summary.csv, its reader and the codec that carries a summary between processes.
+// summary.csv's columns in order, each one's header and where in RunSummary its value is, the one
+// list behind summary.csv, its reader and the codec that carries a summary between processes.
 struct SummaryField {
   template <class T>
   using Get = std::function<T*(RunSummary&)>;
@@ -109,8 +109,8 @@ struct SummaryField {
 };
 const std::vector<SummaryField>& summary_field_table();
 
-// Every summary.csv field of a run as text (the deterministic part of RunSummary: all but the
-// timings), and back: how a run's summary crosses a process boundary exactly.
+// Every summary.csv field of a run as text (the deterministic part of RunSummary, all but the
+// timings), and back, so a run's summary crosses a process boundary exactly.
 std::vector<std::string> summary_fields(const RunSummary& summary);
 void set_summary_fields(RunSummary& summary, const std::vector<std::string>& fields);
 

@@ -1,6 +1,6 @@
 #pragma once
-// What the strategy did, step by step: candidates (edge, fig. 4.3), forces, impulse and the
-// largest imposed acceleration, cap and guard counts, wall contacts, the near distance in force.
+// What the strategy did, step by step: candidates (edge, fig. 4.3), forces, impulse and the largest
+// imposed acceleration, cap and guard counts, wall contacts, the near distance in force.
 
 #include <vector>
 

@@ -16,7 +16,7 @@ class TrajectoryRecord final : public RunObserver {
   void begin(const RunInfo& info, const StepSnapshot& initial) override;
   void observe(const StepSnapshot& snap) override;
 
-  // Snapshots recorded: step 0 and every observed step, so position() takes 0 <= step < steps().
+  // Snapshots recorded, step 0 and every observed step, so position() takes 0 <= step < steps().
   int steps() const { return steps_; }
   int fragments() const { return fragments_; }
   const Eigen::Vector3d& position(int step, int fragment) const {
@@ -38,7 +38,7 @@ class TrajectoryRecord final : public RunObserver {
 
   int fragments_ = 0;
   int steps_ = 0;
-  std::vector<Eigen::Vector3d> positions_m_;  // step-major: all fragments of step 0, then step 1
+  std::vector<Eigen::Vector3d> positions_m_;  // step-major, all fragments of step 0, then step 1
 };
 
 }  // namespace fragsim

@@ -1,6 +1,6 @@
 #pragma once
-// trajectories.csv rows, streamed while the run goes (the file is large: one row per fragment per
-// step). Opt-in: a run without it does no per-fragment output work.
+// trajectories.csv rows, streamed while the run goes, as the file is large (one row per fragment
+// per step). Opt-in, so a run without it does no per-fragment output work.
 
 #include <ostream>
 #include <string>

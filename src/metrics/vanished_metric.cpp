@@ -24,14 +24,14 @@ void VanishedMetric::begin(const RunInfo& info, const StepSnapshot& initial) {
 }
 
 void VanishedMetric::observe(const StepSnapshot& snap) {
-  if (snap.opacity.empty()) {  // opaque: nothing fades
+  if (snap.opacity.empty()) {  // opaque, so nothing fades
     std::fill(prev_opacity_.begin(), prev_opacity_.end(), 1.0f);
     return;
   }
   for (std::size_t i = 0; i < snap.fragments.size(); ++i) {
     const float opacity = snap.opacity[i];
-    // Seen to fade: in view in the frame where it has dropped below half. One that drops as it
-    // leaves the view has left the picture, which is what the thesis wants.
+    // Seen to fade means in view in the frame where it has dropped below half. One that drops as it
+    // leaves the view has left the picture, as the thesis wants.
     if (!faded_[i] && prev_opacity_[i] >= kHalf && opacity < kHalf &&
         in_view(snap.camera, snap.fragments[i])) {
       faded_[i] = 1;

@@ -1,5 +1,5 @@
 #pragma once
-// Vanished fragments: what a fade costs (the thesis's complaint that debris "suddenly
+// Vanished fragments are what a fade costs (the thesis's complaint that debris "suddenly
 // disappears"). A fragment vanishes when its opacity drops below one half between two frames
 // and, in the frame where it is below, it is in the view (its bounding sphere not wholly outside
 // the frustum, near plane included), or when it meets the near rectangle invisible
@@ -18,7 +18,7 @@ class VanishedMetric final : public RunObserver {
  public:
   void begin(const RunInfo& info, const StepSnapshot& initial) override;
   void observe(const StepSnapshot& snap) override;
-  // Sets vanished_fragments: the fragments that faded out in view, with those `near` saw cross
+  // Sets vanished_fragments to the fragments that faded out in view, with those `near` saw cross
   // the near plane invisible.
   void fill(RunSummary& summary, const NearPlaneMetric& near) const;
 

@@ -57,7 +57,7 @@ CameraSample FlightControls::step(HeldControls& held, double t_s, double dt_s) {
   const double max_dv = accel_mps2_ * dt_s;  // infinite for instant turns
   if (dv.norm() > max_dv) dv *= max_dv / dv.norm();
   velocity_mps_ += dv;
-  // Rounding must never lift the speed over V_c: the replayed track is checked against it.
+  // Rounding must never lift the speed over V_c, as the replayed track is checked against it.
   if (velocity_mps_.norm() > max_speed_mps_) velocity_mps_ *= max_speed_mps_ / velocity_mps_.norm();
   eye_m_ += velocity_mps_ * dt_s;
   return sample(t_s);

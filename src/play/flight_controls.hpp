@@ -1,8 +1,8 @@
 #pragma once
-// The camera a person flies: what the keys and the mouse hold turned into one pose per physics
+// The camera a person flies, what the keys and the mouse hold turned into one pose per physics
 // step. The speed follows the held direction at up to the scene's player acceleration and never
-// exceeds V_c (camera.max_speed_mps), the bound strategies are told; keys turn at the scene's
-// turn rate, the mouse as far as it moved.
+// exceeds V_c (camera.max_speed_mps), the bound strategies are told; keys turn at the scene's turn
+// rate, the mouse as far as it moved.
 
 #include <Eigen/Core>
 
@@ -14,7 +14,7 @@ namespace fragsim {
 // What is held at one instant. Axes in [-1, 1]; the mouse's turn is what it moved since the last
 // step, consumed by that step.
 struct HeldControls {
-  double forward = 0.0;  // W / up arrow +1, S / down arrow -1: along the view direction
+  double forward = 0.0;  // W / up arrow +1, S / down arrow -1, along the view direction
   double right = 0.0;    // D / right arrow +1, A / left arrow -1
   double yaw = 0.0;      // E +1 turns right, Q -1 left
   double pitch = 0.0;    // R +1 looks up, F -1 down
@@ -43,7 +43,7 @@ class FlightControls {
   double yaw_rad_ = 0.0;    // 0 looks down -z, positive turns right
   double pitch_rad_ = 0.0;  // positive looks up; kept within +-85 degrees
   double max_speed_mps_;
-  double accel_mps2_;  // +infinity: the velocity follows the keys at once
+  double accel_mps2_;  // at +infinity the velocity follows the keys at once
   double turn_radps_;
 };
 

@@ -30,7 +30,7 @@ std::string track_csv(const CameraDef& camera, const std::string& strategy,
     pose.eye_m = s.eye_m;
     pose.forward = s.forward;
     pose.up = s.up;
-    // The scene's near plane: a strategy that pulls it in changes what it renders, not the track.
+    // The scene's near plane, as pulling it in changes what a strategy renders, not the track.
     pose.near_m = camera.near_m;
     pose.fovy_deg = camera.fovy_deg;
     pose.aspect = camera.aspect;
@@ -74,7 +74,7 @@ std::optional<std::string> record_path_problem(const std::string& requested,
     std::error_code ec;
     if (fs::is_directory(path, ec)) return path + " is a folder";
     try {
-      AtomicFile probe(path);  // destroyed uncommitted: its temporary file is removed
+      AtomicFile probe(path);  // destroyed uncommitted, so its temporary file is removed
     } catch (const std::runtime_error& e) {
       return e.what();
     }

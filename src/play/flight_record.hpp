@@ -1,5 +1,5 @@
 #pragma once
-// What a flight leaves behind: the camera track as camera.csv's columns and, beside it, the
+// What a flight leaves behind is the camera track as camera.csv's columns and, beside it, the
 // resolved scene that replays it (camera.mode = track, the blast aimed at the camera's start, the
 // seed, as many steps as were flown), so `fragsim compare --scene FILE.ini` runs every strategy
 // on exactly that flight. Both files are written whole or not at all.
@@ -29,14 +29,14 @@ struct RecordPaths {
 
 // Where flight number `flight` (from 1) of a session is written. With `requested` (--record
 // FILE), FILE for the first, FILE's stem with -2, -3, ... for the later ones. Without it,
-// play-NNN.csv in `folder` with the smallest NNN for which neither file exists: never over an
+// play-NNN.csv in `folder` with the smallest NNN for which neither file exists, never over an
 // earlier recording.
 RecordPaths record_paths(const std::string& requested, int flight, const std::string& folder);
 
 // Whether the first flight's files (record_paths(requested, 1, folder)) can be written, found
-// before anyone flies: neither may be a folder, and each one's temporary file (the AtomicFile
-// write_flight uses) is created and removed again. Nothing when they can; else why, naming the
-// path. Later flights go to the same folder.
+// before anyone flies. Neither may be a folder, and each one's temporary file (the AtomicFile
+// write_flight uses) is created and removed again. Returns nothing if they can, else why, naming
+// the path. Later flights go to the same folder.
 std::optional<std::string> record_path_problem(const std::string& requested,
                                                const std::string& folder);
 

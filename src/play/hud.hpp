@@ -1,8 +1,8 @@
 #pragma once
-// The line over the picture while playing: the strategy, the flight's time, near-plane fragments
-// and camera hits so far, candidates now, the strategy's milliseconds per step, and whether
-// simulated time runs slower than the clock. A second line at the bottom shows messages (the
-// replay command of the last recording) and the keys.
+// The line over the picture while playing shows the strategy, the flight's time, near-plane
+// fragments and camera hits so far, current candidates, the strategy's milliseconds per step, and
+// whether simulated time runs slower than the clock. A second line at the bottom shows messages
+// (the replay command of the last recording) and the keys.
 
 #include <string>
 
@@ -17,11 +17,11 @@ struct HudState {
   int camera_hits = 0;
   int candidates = 0;
   double strategy_ms = 0.0;
-  // Simulated seconds per wall-clock second over the last moments: 1 in real time, less when the
+  // Simulated seconds per wall-clock second over the last moments, 1 in real time, less when the
   // machine cannot keep up (steps are never dropped).
   double time_rate = 1.0;
   bool paused = false;
-  std::string message;  // empty: the keys
+  std::string message;  // the keys if empty
 };
 
 inline constexpr Rgb kHudBand{0, 0, 0};

@@ -22,17 +22,17 @@ double ms_between(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// A flight's longest: simulation.duration_s's upper bound, so its replay scene is a valid one.
+// A flight's longest is simulation.duration_s's upper bound, so its replay scene is valid.
 constexpr double kMaxFlightS = 3600.0;
 // A window shows at most one frame per 60 Hz refresh; finer steps are simulated, not drawn.
 constexpr double kFrameS = 1.0 / 60.0;
 // The time rate the HUD shows is measured over this much wall time.
 constexpr double kRateWindowS = 1.0;
 
-// What the player's input asks of a flight: go on, or end it and then quit or fly `strategy`.
+// What the player's input asks of a flight, to go on or to end it and then quit or fly `strategy`.
 struct Ask {
   enum class Kind { kFlyOn, kQuit, kFly } kind = Kind::kFlyOn;
-  std::size_t strategy = 0;  // kFly: the next flight's
+  std::size_t strategy = 0;  // the next flight's, for kFly
 };
 
 Scene scene_as_flown(const Scene& scene) {
@@ -73,8 +73,8 @@ class PlaySession::Flight {
         without_(without),
         strategy_(std::move(strategy)) {}
 
-  // The flight's loop, once per state (the explosion's, then each step's): read the input, draw,
-  // step. It ends when the player ends the flight, when the session's max_steps are flown, or
+  // The flight's loop reads the input, draws and steps once per state (the explosion's, then each
+  // step's). It ends when the player ends the flight, when the session's max_steps are flown, or
   // when the run's hour is up (then the same strategy flies again).
   Ask fly(Run& run, SteeredCamera& camera) {
     const double dt = s_.flight_scene_.sim.dt_s;
@@ -100,7 +100,7 @@ class PlaySession::Flight {
       if (run.done()) return {Ask::Kind::kFly, s_.current_};
 
       // Step k ends by asking for the velocity over step k + 1, so the camera is steered one step
-      // ahead: what is held now moves it during step k + 1 (the sample at (k + 2) dt).
+      // ahead, and what is held then moves it during step k + 1 (the sample at (k + 2) dt).
       camera.steer(s_.controls_.step(s_.held_, camera.next_t_s(), dt));
       run.step();
       ++s_.session_steps_;
@@ -128,7 +128,7 @@ class PlaySession::Flight {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       const bool redraw = poll(ask);
       if (ask.kind != Ask::Kind::kFlyOn) return ask;
-      // The camera stands still while paused: a mouse moved meanwhile turns nothing.
+      // The camera stands still while paused, so a mouse moved meanwhile turns nothing.
       s_.held_.mouse_yaw_rad = 0.0;
       s_.held_.mouse_pitch_rad = 0.0;
       if (redraw || !hud_.paused) draw(snap, false);
@@ -282,7 +282,7 @@ void PlaySession::run() {
     const std::string name = strategies_[current_];
     const std::unique_ptr<SceneStrategy> strategy = make_strategy(name, flight_scene_);
     // The camera goes on from where the last flight left it. The run, as it is built, asks for
-    // the velocity over its first step: the sample at dt, under what is held now.
+    // the velocity over its first step, the sample at dt under what is held then.
     SteeredCamera camera(flight_scene_.camera, dt, controls_.sample(0.0));
     camera.steer(controls_.step(held_, camera.next_t_s(), dt));
     NearPlaneMetric near;

@@ -1,10 +1,10 @@
 #pragma once
-// A live session of `fragsim play`: flights one after another, each a Run (sim/run.hpp) of the
+// A live session of `fragsim play` is flights one after another, each a Run (sim/run.hpp) of the
 // scene's explosion stepped by a plain loop that reads the front end's input, steers the camera
 // (steered_camera.hpp), steps the run and draws it with the software renderer and the HUD. Space
 // restarts the flight (the same seed, the blast aimed at where the camera is then), Tab or a
 // number switches the strategy and restarts, P pauses, O toggles the overlays, Esc quits. Every
-// step is simulated at the scene's dt: when the machine cannot keep up simulated time slows (the
+// step is simulated at the scene's dt. When the machine cannot keep up simulated time slows (the
 // HUD says so) and no step is dropped, so the recorded flight (flight_record.hpp) replays exactly.
 
 #include <functional>
@@ -22,15 +22,15 @@ namespace fragsim {
 
 struct PlayOptions {
   std::string strategy = "edge-min";
-  std::string record;         // --record FILE; empty: play-NNN.csv in record_folder
-  std::string record_folder;  // empty: the working folder
+  std::string record;         // --record FILE; if empty, play-NNN.csv in record_folder
+  std::string record_folder;  // the working folder if empty
   bool record_flights = true;
-  std::string screenshot_folder;  // F12's play-shot-NNN.png go here; empty: the working folder
+  std::string screenshot_folder;  // F12's play-shot-NNN.png go here; the working folder if empty
   FrameStyle style;               // the size, and the overlays O toggles
-  long max_steps = 0;             // stop after this many steps in all (the benchmark); 0: never
+  long max_steps = 0;             // stop after this many steps in all (the benchmark); 0 for never
 };
 
-// One flight as it ended: what the HUD showed last and where it was recorded.
+// One flight as it ended, what the HUD showed last and where it was recorded.
 struct FlightReport {
   int flight = 0;  // from 1
   std::string strategy;
@@ -41,7 +41,7 @@ struct FlightReport {
   std::optional<RecordPaths> recorded;  // none for a flight of no step, or without recording
 };
 
-// Per drawn frame, in milliseconds: the parts and the whole (the steps since the last frame,
+// Per drawn frame, in milliseconds, the parts and the whole (the steps since the last frame,
 // metrics, input, drawing and presenting; not the wait for the clock).
 struct FrameTimes {
   std::vector<double> physics_ms;
@@ -69,10 +69,10 @@ class PlaySession {
   const std::vector<std::string>& strategies() const { return strategies_; }
 
  private:
-  // One flight's loop and what it shows: read the input, step the run, draw.
+  // One flight's loop, which reads the input, steps the run and draws.
   class Flight;
 
-  Scene flight_scene_;  // the scene as flown: object placed, aim present, up to an hour
+  Scene flight_scene_;  // the scene as flown (object placed, aim present, up to an hour)
   PlayOptions options_;
   PlayFrontend& frontend_;
   std::vector<std::string> strategies_;

@@ -1,6 +1,6 @@
 #pragma once
-// A player that is a script: the benchmark's front end (`fragsim play --bench-frames N`). It flies
-// a fixed route by the step count: toward the blast, strafing right, then left while turning, and
+// A player that is a script, the benchmark's front end (`fragsim play --bench-frames N`). It flies
+// a fixed route by the step count, toward the blast, strafing right, then left while turning, and
 // back, each for a second; nothing is shown and nothing waits for the clock, so the same loop as
 // the window's runs as fast as the machine allows.
 

@@ -30,8 +30,8 @@ Eigen::Vector3d SteeredCamera::eye_at(double t_s) const {
 }
 
 Eigen::Vector3d SteeredCamera::velocity_at(double t_s) const {
-  // The velocity over the step from t_s needs the sample at its end: a track past its last
-  // sample would stand still, which the player did not ask for.
+  // The velocity over the step from t_s needs the sample at its end, as past its last sample a
+  // track stands still, which the player did not ask for.
   assert(t_s < track_.samples().back().t_s);
   return track_.velocity_at(t_s);
 }

@@ -1,7 +1,7 @@
 #pragma once
-// A camera whose motion is decided as the run goes: a track (SampledCamera) that the player's loop
+// A camera whose motion is decided as the run goes, a track (SampledCamera) that the player's loop
 // grows by one sample per step, ahead of the run (run.hpp says how far). The samples are the
-// recorded flight: replayed as camera.mode = track they give the run the same poses and
+// recorded flight, and replayed as camera.mode = track they give the run the same poses and
 // velocities, bit for bit.
 
 #include <vector>

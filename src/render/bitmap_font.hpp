@@ -1,7 +1,7 @@
 #pragma once
-// A tiny built-in bitmap font for labels: glyphs 5 pixels wide, 7 above the baseline and 2 below
-// it (the descenders of g j p q y). Digits, lower-case letters (upper case is drawn as lower case),
-// space and - . = : / ( ) % _ +; other characters advance without drawing.
+// A tiny built-in bitmap font for labels, with glyphs 5 pixels wide, 7 above the baseline and 2
+// below it (the descenders of g j p q y). Digits, lower-case letters (upper case is drawn as lower
+// case), space and - . = : / ( ) % _ +; other characters advance without drawing.
 
 #include <string_view>
 

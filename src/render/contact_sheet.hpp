@@ -1,6 +1,6 @@
 #pragma once
-// A contact sheet: one row per strategy, one column per chosen step, each cell a small frame of
-// that strategy's run at that step, with the strategy's name at the row's start and the time
+// A contact sheet has one row per strategy and one column per chosen step, each cell a small frame
+// of that strategy's run at that step, with the strategy's name at the row's start and the time
 // above each column.
 
 #include <string>
@@ -15,13 +15,13 @@ namespace fragsim {
 
 struct SheetStyle {
   int cell_width_px = 320;
-  int cell_height_px = 0;                   // 0: the camera's aspect (180 for 320 at 16:9)
+  int cell_height_px = 0;                   // 0 for the camera's aspect (180 for 320 at 16:9)
   FrameOverlays overlays = {.cuts = true};  // a small frame's hole is easy to miss
 };
 
-// The default columns: 10%, 20%, 25% and 35% of a run of `step_count` steps, rounded, repeats
-// dropped: the debris of the shipped scenes reaches the camera at 10-30% of the run (front.ini:
-// cut by the near plane from step 41 to 49 of 180, thesis125.ini 35-37 of 180, close.ini 12-17
+// The default columns are 10%, 20%, 25% and 35% of a run of `step_count` steps, rounded, repeats
+// dropped, as the debris of the shipped scenes reaches the camera at 10-30% of the run (front.ini's
+// is cut by the near plane from step 41 to 49 of 180, thesis125.ini 35-37 of 180, close.ini 12-17
 // of 120, distance.ini 61-62 of 210).
 std::vector<int> default_sheet_steps(int step_count);
 

@@ -25,7 +25,7 @@ struct RecordedFrame {
   std::vector<int> candidates;
   std::vector<int> capped;
   std::vector<int> camera_hits;
-  std::vector<float> opacity;  // empty: all opaque
+  std::vector<float> opacity;  // empty if all opaque
 
   explicit RecordedFrame(const StepSnapshot& snap);
   // A snapshot whose spans point into this frame (valid while it lives, unmoved).
@@ -51,8 +51,8 @@ class FrameRecorder final : public RunObserver {
   struct Run {
     std::string strategy;
     std::vector<RecordedFrame> frames;
-    // Copies of the convex shapes the frames show, by the run's own pointer: the run's shapes die
-    // with its simulation, and frames are drawn after it (a contact sheet of every strategy).
+    // Copies of the convex shapes the frames show, by the run's own pointer, as the run's shapes
+    // die with its simulation and frames are drawn later (a contact sheet of every strategy).
     // Per run, since a later run's shapes may reuse a freed one's address.
     std::map<const ConvexShape*, std::shared_ptr<const ConvexShape>> shapes;
   };

@@ -16,7 +16,7 @@ namespace fragsim {
 
 namespace {
 
-// Light: from above, a little left and behind a camera looking down -z.
+// Lit from above, a little left and behind a camera looking down -z.
 const Eigen::Vector3d kLight = Eigen::Vector3d(-0.35, 1.0, 0.45).normalized();
 constexpr double kAmbient = 0.3;
 
@@ -35,7 +35,7 @@ Rgb scaled(Rgb c, double k) {
   return {channel(c.r * k), channel(c.g * k), channel(c.b * k)};
 }
 
-// A 32-bit integer hash (the "lowbias32" mixer): well spread, and the same on every machine.
+// A 32-bit integer hash (the "lowbias32" mixer), well spread and the same on every machine.
 std::uint32_t hash32(std::uint32_t x) {
   x ^= x >> 16;
   x *= 0x7feb352dU;
@@ -122,7 +122,7 @@ void FrameRenderer::draw_background(Image& image, const CameraPose& camera) {
     return Rgb{channel(c.x()), channel(c.y()), channel(c.z())};
   };
   // The world direction through a pixel centre (its camera-space z is 1, so the distance along it
-  // to the ground is the depth) is affine in the column: one step per row and column.
+  // to the ground is the depth) is affine in the column, one step per row and column.
   const Eigen::Vector3d d00 = r.pixel_direction(0, 0);
   const Eigen::Vector3d d11 = r.pixel_direction(1, 1);
   const Eigen::Vector3d col_step = (d11.x() - d00.x()) * camera.right;
@@ -136,7 +136,7 @@ void FrameRenderer::draw_background(Image& image, const CameraPose& camera) {
         if (z >= camera.near_m && z <= camera.far_m) {
           const double hx = camera.eye_m.x() + z * dir.x();
           const double hz = camera.eye_m.z() + z * dir.z();
-          // The square's parity, in double: no cast can overflow however far the far plane lies.
+          // Parity in double, so no cast can overflow however far the far plane lies.
           const bool odd =
               std::fmod(std::floor(hx / kCheckerM) + std::floor(hz / kCheckerM), 2.0) != 0.0;
           const double footprint_m = z * z / (px_per_slope * eye_height_m);
@@ -162,9 +162,9 @@ bool faces_eye(const CameraBox& b, int k, double s) {
   return (s * b.dirs.col(k)).dot(b.centre_m + s * b.half_axes_m.col(k)) < 0.0;
 }
 
-// The box seen from `cam`, or nothing when it cannot show: wholly before the near plane or beyond
-// the far one, wholly outside a side plane (by its bounding sphere), or not finite (the simulation
-// reports non-finite states itself; they must not paint the screen).
+// The box seen from `cam`, or nothing when it is wholly before the near plane or beyond the far
+// one, wholly outside a side plane (by its bounding sphere), or not finite (the simulation reports
+// non-finite states itself; they must not paint the screen).
 std::optional<CameraBox> view_box(const CameraPose& cam, const FragmentState& f) {
   const CameraBox b = camera_box(cam, f);
   if (!b.finite()) return std::nullopt;
@@ -172,7 +172,7 @@ std::optional<CameraBox> view_box(const CameraPose& cam, const FragmentState& f)
   return b;
 }
 
-// A convex piece seen from `cam`: its camera-space vertices in `out`, or false when it cannot show
+// A convex piece seen from `cam`, its camera-space vertices in `out`, or false when it cannot show
 // (the same tests as view_box, with the hull's own bounding sphere).
 bool view_hull(const CameraPose& cam, const FragmentState& f, std::vector<Eigen::Vector3d>& out) {
   hull_camera_vertices(cam, f, out);
@@ -182,9 +182,9 @@ bool view_hull(const CameraPose& cam, const FragmentState& f, std::vector<Eigen:
   return cam.frustum().sphere_may_show(cam.to_camera(f.position_m), f.shape->radius_m);
 }
 
-// Whether face `i` of the piece faces the eye at the origin: its plane n . x = d in the body frame
-// is n_c . x = n_c . c + d in camera space, and the eye is outside it. From the plane rather than
-// from a vertex, so every face of a thin piece gets one answer however its vertices round.
+// Whether face `i` of the piece faces the eye at the origin, i.e. the eye is outside its plane
+// (n . x = d in the body frame, n_c . x = n_c . c + d in camera space). Testing the plane rather
+// than a vertex gives every face of a thin piece one answer however its vertices round.
 bool hull_face_faces_eye(const Eigen::Matrix3d& body_to_cam, const Eigen::Vector3d& centre_m,
                          const ConvexShape& shape, std::size_t i) {
   return (body_to_cam * shape.normals[i]).dot(centre_m) + shape.offsets_m[i] < 0.0;
@@ -198,7 +198,7 @@ void hull_cut_points(const Rasterizer& r, const ConvexShape& shape,
     for (std::size_t k = 0; k < face.size(); ++k) {
       const int ia = face[k];
       const int ib = face[k + 1 == face.size() ? 0 : k + 1];
-      if (ia > ib) continue;  // each edge borders two faces, once each way: take it once
+      if (ia > ib) continue;  // each edge borders two faces, once each way, so take it once
       const Eigen::Vector3d& a = v[static_cast<std::size_t>(ia)];
       const Eigen::Vector3d& b = v[static_cast<std::size_t>(ib)];
       if ((a.z() >= near_m) == (b.z() >= near_m)) continue;
@@ -238,7 +238,7 @@ void FrameRenderer::draw_hull_faces(int index, const FragmentState& f) {
     if (face.size() < 3 || !hull_face_faces_eye(m, c, shape, i)) continue;  // back faces culled
     const Rgb shade = shaded_colour(base, f.rotation * shape.normals[i]);
     const Eigen::Vector3d& p0 = hull_vertices_[static_cast<std::size_t>(face[0])];
-    for (std::size_t k = 1; k + 1 < face.size(); ++k) {  // a fan: the face is convex
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) {  // a fan, as the face is convex
       raster_.fill_triangle(p0, hull_vertices_[static_cast<std::size_t>(face[k])],
                             hull_vertices_[static_cast<std::size_t>(face[k + 1])], shade);
     }
@@ -306,8 +306,8 @@ void FrameRenderer::draw_outline(const FragmentState& f) {
   }
   const std::optional<CameraBox> box = view_box(raster_.camera(), f);
   if (!box) return;
-  // The edges of the visible faces: the edge along axis k from corner i is where the faces across
-  // axes u and v (on i's sides) meet; it shows when either faces the eye.
+  // The edges of the visible faces. The edge along axis k from corner i is where the faces across
+  // axes u and v (on i's sides) meet, and it shows when either faces the eye.
   for (int i = 0; i < 8; ++i) {
     for (int k = 0; k < 3; ++k) {
       if ((i >> k) & 1) continue;  // each edge once, from its corner with bit k clear
@@ -329,8 +329,8 @@ void FrameRenderer::draw_cut(Image& image, const FragmentState& f) {
   const CameraPose& cam = raster_.camera();
   const std::optional<CameraBox> box = view_box(cam, f);
   if (!box) return;
-  // The near plane's section through the box: where its 12 edges cross z = near, in angular order
-  // around their mean (the section is convex).
+  // The near plane's section through the box is where its 12 edges cross z = near, in angular
+  // order around their mean (the section is convex).
   const std::array<Eigen::Vector3d, 8> corner = box->corners();
   std::array<ScreenPoint, 12> pts;
   int n = 0;
@@ -413,7 +413,7 @@ Image FrameRenderer::render(const StepSnapshot& snap) {
     }
   }
   if (o.central) {
-    // The occlusion metric's central region: this share of the width and height, centred.
+    // The occlusion metric's central region, this share of the width and height, centred.
     const auto margin = [this](int n) {
       return static_cast<int>(std::lround(0.5 * n * (1.0 - central_share_)));
     };

@@ -26,7 +26,7 @@ class Image {
   int height() const { return height_; }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
 
-  // Pixel (x, y): column x from the left, row y from the top. Asserts it lies in the image.
+  // Pixel (x, y) is column x from the left, row y from the top. Asserts it lies in the image.
   Rgb at(int x, int y) const {
     assert(contains(x, y));
     const std::uint8_t* p = bytes_.data() + offset(x, y);
@@ -60,10 +60,10 @@ class Image {
   std::vector<std::uint8_t> bytes_;
 };
 
-// The image as a PNG file's bytes (8-bit RGB, no time stamp: the same pixels give the same
+// The image as a PNG file's bytes (8-bit RGB, no time stamp, so the same pixels give the same
 // bytes). Throws std::runtime_error with libpng's message.
 std::string encode_png(const Image& image);
-// A PNG file's bytes back to 8-bit RGB (any PNG: converted). Throws std::runtime_error.
+// A PNG file's bytes back to 8-bit RGB (any PNG is converted). Throws std::runtime_error.
 Image decode_png(const std::string& png_bytes);
 
 // Writes `image` as a PNG file through AtomicFile (whole or not at all); throws naming the path.

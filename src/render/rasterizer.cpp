@@ -85,7 +85,7 @@ void Rasterizer::fill_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& 
                                const Eigen::Vector3d& c, Rgb colour) {
   assert(image_ && "begin() starts a frame");
   if (!a.allFinite() || !b.allFinite() || !c.allFinite()) return;
-  // Each plane adds at most one corner: 3 -> 4 -> 5.
+  // Each plane adds at most one corner (3 -> 4 -> 5).
   std::array<Eigen::Vector3d, 5> poly{a, b, c};
   std::array<Eigen::Vector3d, 5> tmp;
   int n = 3;
@@ -107,7 +107,7 @@ void Rasterizer::fill_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& 
     p[i] = project(poly[i]);
     inv_z[i] = 1.0 / poly[i].z();
   }
-  // The clipped polygon is convex: a fan from its first corner.
+  // The clipped polygon is convex; fan it from its first corner.
   for (int i = 1; i + 1 < n; ++i) {
     const std::array<ScreenPoint, 3> tri{p[0], p[i], p[i + 1]};
     const std::array<double, 3> w{inv_z[0], inv_z[i], inv_z[i + 1]};
@@ -116,7 +116,7 @@ void Rasterizer::fill_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& 
 }
 
 bool dither_shows(int col, int row, float opacity) {
-  // The 4x4 Bayer matrix: neighbouring thresholds far apart, so any opacity gives an even,
+  // The 4x4 Bayer matrix puts neighbouring thresholds far apart, so any opacity gives an even,
   // regular pattern rather than clumps.
   static constexpr int kBayer[4][4] = {
       {0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
@@ -132,7 +132,7 @@ void Rasterizer::fill_projected(const ScreenPoint* p, const double* inv_z, Rgb c
   const PixelRange rows =
       centres_in(std::min({p[0].y, p[1].y, p[2].y}), std::max({p[0].y, p[1].y, p[2].y}), height_);
   // The weight of corner i is the signed area over the opposite edge (a, b), >= 0 inside (edges
-  // included); along a row it is affine in x: w_i = c_i + slope_i x.
+  // included), and along a row it is affine in x, w_i = c_i + slope_i x.
   std::array<double, 3> slope;
   for (int i = 0; i < 3; ++i) {
     const ScreenPoint& a = p[(i + 1) % 3];

@@ -1,15 +1,15 @@
 #pragma once
 // A software rasteriser in a GPU's manner, for one camera pose at a time. Geometry is given in
-// camera coordinates (CameraPose::to_camera: x right, y up, z = depth along the view direction).
+// camera coordinates (CameraPose::to_camera, x right, y up, z = depth along the view direction).
 // Each triangle is clipped against the near and far planes of that pose (Sutherland-Hodgman on
-// z = near_m and z = far_m), then divided by its depth and filled into the image with a z-buffer:
-// so a box crossing the near plane loses the part in front of it, and with back faces culled by the
-// caller its inside is not drawn (the hole a game shows). Lines are clipped the same way and drawn
-// over everything, without a depth test (overlays).
+// z = near_m and z = far_m), then divided by its depth and filled into the image with a z-buffer,
+// so a box crossing the near plane loses the part in front of it, and with back faces culled by
+// the caller its inside is not drawn (the hole a game shows). Lines are clipped the same way and
+// drawn over everything, without a depth test (overlays).
 //
-// Screen: the frustum's [-1, 1]^2 in NDC maps onto the whole image, x to the right and y DOWN
-// (row 0 is the top), as in OcclusionMetric; pixel (col, row) spans [col, col + 1] x [row, row + 1]
-// and is drawn when its centre lies in a triangle (edges included).
+// The frustum's [-1, 1]^2 in NDC maps onto the whole image, x to the right and y DOWN (row 0 is the
+// top), as in OcclusionMetric; pixel (col, row) spans [col, col + 1] x [row, row + 1] and is drawn
+// when its centre lies in a triangle (edges included).
 
 #include <Eigen/Core>
 #include <cassert>
@@ -22,7 +22,7 @@
 
 namespace fragsim {
 
-// Sutherland-Hodgman against one plane z = plane_z: keeps the part of the convex polygon
+// Sutherland-Hodgman against one plane z = plane_z keeps the part of the convex polygon
 // in[0..n) with z >= plane_z (keep_greater) or z <= plane_z, in order; points made on the plane
 // get z = plane_z exactly. Writes to out (room for n + 1 points) and returns the count (0 when
 // nothing is kept).
@@ -31,7 +31,7 @@ int clip_polygon_z(const Eigen::Vector3d* in, int n, double plane_z, bool keep_g
 
 class Rasterizer {
  public:
-  // Starts a frame in `image` (its size is the viewport) seen from `camera`: clears the depth
+  // Starts a frame in `image` (its size is the viewport) seen from `camera` and clears the depth
   // buffer to "infinitely far". The image's pixels are left as they are.
   void begin(Image& image, const CameraPose& camera);
 
@@ -48,12 +48,12 @@ class Rasterizer {
     return projection_.pixel_direction(col, row);
   }
 
-  // The opacity the next triangles are drawn with, in [0, 1]: below 1 a triangle is drawn
+  // The opacity the next triangles are drawn with, in [0, 1]. Below 1 a triangle is drawn
   // dithered, as Unreal's and Godot's distance fades are, through a 4x4 ordered (Bayer) matrix
-  // fixed to the screen: a pixel is written (colour and depth, as an opaque one) only where the
+  // fixed to the screen. A pixel is written (colour and depth, as an opaque one) only where the
   // opacity exceeds its threshold (b + 0.5) / 16, b the matrix's entry 0..15, so a share of
   // about `opacity` of the pixels shows and the rest show what lies behind. 1 (the default)
-  // draws every pixel as before.
+  // draws every pixel.
   void set_opacity(float opacity) { opacity_ = opacity; }
   float opacity() const { return opacity_; }
 

@@ -21,8 +21,8 @@ void add_comparison_csv(OutputSet& files, const std::string& dir, const Scene& s
 std::string summary_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string steps_csv(const Scene& scene, const std::vector<Evaluation>& runs);
 std::string camera_csv(const Scene& scene, const std::vector<Evaluation>& runs);
-// camera.csv's header line, and one of its rows (`pose` at step `step`, time t_s) appended: the
-// one format a recorded flight (fragsim play) and a run's camera.csv share, so either replays.
+// camera.csv's header line, and one of its rows (`pose` at step `step`, time t_s) appended, the one
+// format a recorded flight (fragsim play) and a run's camera.csv share, so either replays.
 const std::string& camera_csv_header();
 void append_camera_row(std::string& out, const std::string& strategy, std::size_t step, double t_s,
                        const CameraPose& pose);

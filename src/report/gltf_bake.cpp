@@ -153,13 +153,13 @@ std::string bake_glb(const BakeTrack& track) {
   model.buffers.emplace_back();
   std::vector<unsigned char>& data = model.buffers.front().data;
 
-  // The meshes (the ground's last): positions in one view, indices in another.
+  // The meshes (the ground's last), positions in one view, indices in another.
   std::vector<BakeMesh> meshes = track.meshes;
   int ground_mesh = -1;
   if (track.ground) {
     const auto h = static_cast<float>(track.ground_half_m);
     BakeMesh g;
-    // Counter-clockwise seen from above: the plane faces +Y.
+    // Counter-clockwise seen from above, so the plane faces +Y.
     g.vertices_m = {{-h, 0.f, -h}, {-h, 0.f, h}, {h, 0.f, h}, {h, 0.f, -h}};
     g.triangles = {0, 1, 2, 0, 2, 3};
     ground_mesh = static_cast<int>(meshes.size());
@@ -293,8 +293,8 @@ std::string bake_glb(const BakeTrack& track) {
     node.name = "camera";
     node.camera = 0;
     first_pose(node, &track.camera_translation_m[0], &track.camera_rotation[0]);
-    // The near distance in force at each sample: `near-plane` moves it, which core glTF cannot
-    // animate (the camera's znear is the first sample's).
+    // Each sample's near distance in force, as `near-plane` moves it and core glTF cannot animate
+    // it (the camera's znear is the first sample's).
     tinygltf::Value::Array near;
     for (double d : track.camera_near_m) near.push_back(number(d));
     tinygltf::Value::Object extras;
@@ -317,7 +317,7 @@ std::string bake_glb(const BakeTrack& track) {
 
   tinygltf::Value::Object extras;
   extras["scene"] = tinygltf::Value(track.scene_name);
-  // Text: a 64-bit seed does not fit a JSON number exactly.
+  // Text, since a 64-bit seed does not fit a JSON number exactly.
   extras["seed"] = tinygltf::Value(std::to_string(track.seed));
   extras["strategy"] = tinygltf::Value(track.strategy);
   extras["fragsim_version"] = tinygltf::Value(std::string(FRAGSIM_VERSION));

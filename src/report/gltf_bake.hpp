@@ -3,8 +3,8 @@
 // piece's real mesh (debris/mesh_file.hpp's body_polyhedron, the meshes `fracture` writes), the
 // camera as a perspective camera node, the ground as a plane, and one animation whose translation
 // and rotation channels (LINEAR, 32-bit floats, one time accessor shared by every channel) replay
-// the poses of each sampled step. Metres, Y up, right-handed: fragsim's frame is glTF's. The
-// recorder is an observer: it reads the snapshots and never changes the run.
+// the poses of each sampled step. fragsim's frame (metres, Y up, right-handed) is glTF's. The
+// recorder is an observer; it reads the snapshots and never changes the run.
 
 #include <array>
 #include <cstddef>
@@ -28,16 +28,16 @@ const char* fragsim_version();
 // 181 steps take about 10 MB).
 inline constexpr double kDefaultBakeLimit_MB = 256.0;
 
-// A unit quaternion (x, y, z, w: glTF's order) of the rotation whose columns are `axes`, with
+// A unit quaternion (x, y, z, w in glTF's order) of the rotation whose columns are `axes`, with
 // w >= 0. `axes` need only be orthonormal to rounding (ODE's matrices, a camera's
 // right/up/-forward).
 std::array<float, 4> quaternion_xyzw(const Eigen::Matrix3d& axes);
 
-// The camera node's rotation: glTF cameras look down their local -Z with +Y up, so the node's axes
-// are right, up and -forward (CameraPose::rotation()).
+// The camera node's rotation. glTF cameras look down their local -Z with +Y up, so the node's
+// axes are right, up and -forward (CameraPose::rotation()).
 std::array<float, 4> camera_quaternion_xyzw(const CameraPose& camera);
 
-// One mesh: vertices about the piece's centre of mass in its body axes, triangles
+// One mesh, its vertices about the piece's centre of mass in its body axes, triangles
 // counter-clockwise from outside.
 struct BakeMesh {
   std::vector<Eigen::Vector3f> vertices_m;
@@ -52,30 +52,30 @@ struct BakeTrack {
   double dt_s = 0.0;
   int every = 1;  // steps between samples
   std::vector<BakeMesh> meshes;
-  std::vector<int> piece_mesh;  // per piece: its mesh (pieces of one shape share it)
+  std::vector<int> piece_mesh;  // each piece's mesh (pieces of one shape share it)
   bool ground = false;
   double ground_height_m = 0.0;
   Eigen::Vector2d ground_centre_xz_m = Eigen::Vector2d::Zero();
   double ground_half_m = 100.0;
   // The camera's constants at the first sample (yfov in degrees as the scene gives it).
   double fovy_deg = 60.0, aspect = 1.0, near_m = 0.1, far_m = 100.0;
-  // Per sample: its time, then per piece (sample-major) translation x y z and rotation x y z w.
+  // Each sample's time, then per piece (sample-major) translation x y z and rotation x y z w.
   std::vector<float> times_s;
   std::vector<float> piece_translation_m;
   std::vector<float> piece_rotation;
   std::vector<float> camera_translation_m;  // x y z per sample
   std::vector<float> camera_rotation;       // x y z w per sample
-  std::vector<double> camera_near_m;        // per sample: the near distance in force (near-plane)
+  std::vector<double> camera_near_m;        // the near distance in force per sample (near-plane)
 
   std::size_t piece_count() const { return piece_mesh.size(); }
   std::size_t sample_count() const { return times_s.size(); }
 };
 
-// The mesh of a piece of this shape (null: the box of these half extents).
+// The mesh of a piece of this shape (if null, of the box of these half extents).
 BakeMesh bake_mesh(const ConvexShape* shape, const Eigen::Vector3d& half_extents_m);
 
-// Appends a sample: the time, each fragment's pose and the camera's. Each quaternion takes the sign
-// nearer the same track's previous one, so LINEAR interpolation turns the short way.
+// Appends a sample of the time, each fragment's pose and the camera's. Each quaternion takes the
+// sign nearer the same track's previous one, so LINEAR interpolation turns the short way.
 void add_bake_sample(BakeTrack& track, double t_s, std::span<const FragmentState> fragments,
                      const CameraPose& camera);
 
@@ -83,11 +83,11 @@ void add_bake_sample(BakeTrack& track, double t_s, std::span<const FragmentState
 // the track is inconsistent (no sample, a piece without its poses) or the glTF writer fails.
 std::string bake_glb(const BakeTrack& track);
 
-// The animation data alone, before the JSON and the meshes: a lower bound of a bake's size, known
+// The animation data alone, before the JSON and the meshes, a lower bound of a bake's size known
 // before the run, for --bake-max-mb.
 std::size_t bake_animation_bytes(int piece_count, int step_count, int every);
 
-// The file a strategy's bake goes to: `path` itself for a single strategy, else `path` with
+// The file a strategy's bake goes to, `path` itself for a single strategy, else `path` with
 // ".<strategy>" before its extension (shot.glb -> shot.edge-min.glb).
 std::string bake_file_path(const std::string& path, const std::string& strategy, bool several);
 

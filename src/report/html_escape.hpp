@@ -1,5 +1,5 @@
 #pragma once
-// Text for HTML and SVG: the five characters with a meaning in markup, escaped, so scene names,
+// Text for HTML and SVG, the five characters with a meaning in markup escaped, so scene names,
 // strategy names and settings can never open a tag or end an attribute.
 
 #include <string>

@@ -82,7 +82,7 @@ std::string joined(const std::vector<std::string>& items) {
 }
 
 // The notes under the page's table, as HTML: the legend, what the page leaves out, then the
-// runs' notes (the terminal's, but the timings).
+// runs' notes (the terminal's, less the timings).
 std::vector<std::string> table_notes(const ResultsTable& table) {
   std::vector<std::string> notes{
       legend_html(table) +
@@ -281,7 +281,7 @@ std::vector<std::string> report_reading(const std::vector<Evaluation>& runs) {
     paragraphs.push_back(
         "Also free of intersections and camera hits, with more deviation: " + joined(also) + ".");
   }
-  // A run that hides debris instead of steering it: what it saves at the lens and what it costs.
+  // For a run that hides debris rather than steer it, what it saves at the lens and costs.
   for (const Evaluation& e : runs) {
     const RunSummary& o = e.summary;
     if (o.intersections.vanished_fragments == 0) continue;
@@ -329,7 +329,7 @@ std::string html_report(const Scene& scene, const std::vector<Evaluation>& runs,
   std::string h;
   h += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   h += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  // An empty icon: the browser would otherwise look for favicon.ico beside the page.
+  // An empty icon, or the browser would look for favicon.ico beside the page.
   h += "<link rel=\"icon\" href=\"data:,\">\n";
   h += "<title>fragsim report: " + name + "</title>\n<style>\n";
   h += kStyle;

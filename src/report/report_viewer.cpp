@@ -39,8 +39,8 @@ std::string base64(std::string_view text) {
   return base64(std::vector<std::uint8_t>(text.begin(), text.end()));
 }
 
-// Little-endian whatever the host: the page reads them with a DataView-free Int16Array, and every
-// browser that runs WebGL is little-endian.
+// Little-endian whatever the host, as the page reads them with a DataView-free Int16Array and
+// every browser that runs WebGL is little-endian.
 void append_int16(std::vector<std::uint8_t>& out, const std::vector<std::int16_t>& values) {
   for (const std::int16_t v : values) {
     const auto u = static_cast<std::uint16_t>(v);
@@ -144,7 +144,7 @@ void ViewerRecorder::begin(const RunInfo& info, const StepSnapshot& initial) {
   step_count_ = info.step_count;
   const std::size_t n = initial.fragments.size();
   if (runs_.empty()) {
-    // The pieces are the same in every run (same scene, same seed): one mesh per shape, shared.
+    // The pieces are the same in every run (same scene, same seed), so each shape's mesh is shared.
     std::map<std::tuple<const ConvexShape*, double, double, double>, int> seen;
     for (const FragmentState& f : initial.fragments) {
       const auto key = std::make_tuple(f.shape, f.shape ? 0.0 : f.half_extents_m.x(),
@@ -266,7 +266,7 @@ std::string viewer_section_html(const Scene& scene, const ViewerRecorder& record
        "height=\"520\"></canvas></div>\n";
   h += "<p class=\"notes\" id=\"viewer-status\">Loading the 3D view&hellip;</p>\n";
 
-  // The data the script reads: JSON (numbers written fixed, so the page is the same bytes for the
+  // The data the script reads is JSON (numbers written fixed, so the page is the same bytes for the
   // same runs) with each run's quantised poses as base64.
   std::string data = "{\"scene\":" + quoted(scene.name);
   data += ",\"every\":" + std::to_string(every);
@@ -283,7 +283,7 @@ std::string viewer_section_html(const Scene& scene, const ViewerRecorder& record
   data += "}";
   h += "<script type=\"application/json\" id=\"viewer-data\">" + data + "</script>\n";
   // Chromium refuses module scripts from file:// URLs (the page opens from disk), but imports a
-  // data: URL: three.js travels in the page as base64 and the viewer imports it from there.
+  // `data:` URL, so three.js travels in the page as base64 and is imported from there.
   h += "<script type=\"text/plain\" id=\"three-module\">" + base64(three.module_js) + "</script>\n";
   h += "<script type=\"module\">\n" + std::string(report_viewer_js()) + "</script>\n";
   h += "<details class=\"notes\"><summary>three.js " + html_escape(std::string(three.version)) +

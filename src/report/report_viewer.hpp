@@ -1,12 +1,12 @@
 #pragma once
-// The report's 3D player (compare --report): the pieces and the camera of each strategy's run over
-// time, drawn by three.js in the page (report_viewer.js). The recorder is an observer: it keeps
-// each run's piece poses at sampled steps, the pieces the strategy pushed and those the near plane
-// cut (its own NearPlaneMetric, so the flags are the metric's), and never changes the run.
+// The report's 3D player (compare --report) shows the pieces and the camera of each strategy's run
+// over time, drawn by three.js in the page (report_viewer.js). The recorder is an observer; it
+// keeps each run's piece poses at sampled steps, the pieces the strategy pushed and those the near
+// plane cut (its own NearPlaneMetric, so the flags are the metric's), and never changes the run.
 //
 // The page must stay small and the same bytes for the same scene and seed, so the poses are
-// quantised: positions as 16-bit integers over the run's bounding box (error at most the box's
-// extent / 131,068 per axis), quaternion components as 16-bit integers (error at most 1/65,534);
+// quantised, positions as 16-bit integers over the run's bounding box (error at most the box's
+// extent / 131,068 per axis), quaternion components as 16-bit integers (error at most 1/65,534),
 // and sampled every `every` steps (viewer_sample_every), the last step always kept. A sample's
 // flags cover every step since the previous sample, so subsampling hides no push and no hit.
 
@@ -22,11 +22,11 @@
 
 namespace fragsim {
 
-// The encoded viewer data the report allows for all strategies together: with three.js (about
+// The encoded viewer data the report allows for all strategies together. With three.js (about
 // 0.9 MB encoded) and the rest of the page, front.ini with every strategy stays under 30 MB.
 inline constexpr double kViewerBudget_bytes = 24e6;
 
-// Bytes per piece per sample once encoded: 3 + 4 int16, one flag byte, base64's 4/3.
+// Bytes per piece per sample once encoded (3 + 4 int16, one flag byte, base64's 4/3).
 inline constexpr double kViewerPieceSample_bytes = 15.0 * 4.0 / 3.0;
 
 // The sampling stride in steps that keeps `strategy_count` runs of `piece_count` pieces over
@@ -42,7 +42,7 @@ struct ViewerRun {
   std::string strategy;
   std::vector<int> steps;  // the sampled steps, 0 first, the last step last
   Eigen::Vector3f lo_m = Eigen::Vector3f::Zero(), hi_m = Eigen::Vector3f::Zero();
-  // Sample-major: per sample, per piece x y z (positions), x y z w (rotations), flags.
+  // Sample-major, per sample and piece x y z (positions), x y z w (rotations), flags.
   std::vector<std::int16_t> position_q;
   std::vector<std::int16_t> rotation_q;
   std::vector<std::uint8_t> flags;
@@ -76,9 +76,9 @@ class ViewerRecorder final : public RunObserver {
   std::vector<ViewerRun> runs_;
 };
 
-// The 3D view's section of the page: the controls, the canvas, the data and the scripts (three.js
-// as a data: URL module, then report_viewer.js). `left` and `right`: the strategies shown at first
-// (right may be empty: one view). Without three.js, one paragraph saying why and how to get it.
+// The 3D view's section of the page, its controls, canvas, data and scripts (three.js as a `data:`
+// URL module, then report_viewer.js). `left` and `right` are the strategies shown at first (right
+// may be empty, for one view). Without three.js, one paragraph saying why and how to get it.
 std::string viewer_section_html(const Scene& scene, const ViewerRecorder& recorder,
                                 const std::string& left, const std::string& right,
                                 const BundledThreeJs& three);

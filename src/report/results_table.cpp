@@ -15,8 +15,8 @@ namespace {
 
 using Cell = std::function<std::string(const Evaluation&)>;
 
-// Irregular pieces differ in size by orders of magnitude, which is what such a scene tests: the
-// header says how much. Equal cubes say nothing more than their count.
+// Irregular pieces differ in size by orders of magnitude, what such a scene tests, so the header
+// says how much. Equal cubes say nothing more than their count.
 std::string piece_sizes_text(const Scene& scene) {
   const bool mesh = !scene.object.mesh_file.empty();
   if (!mesh && scene.object.pattern == DebrisPattern::kGrid) return "";
@@ -50,7 +50,7 @@ Cell fixed_cell(Part RunSummary::*part, double Part::*field, int decimals) {
   };
 }
 
-// Deviation is measured against the `none` run: a run without it shows a dash, not a zero.
+// Deviation is measured against the `none` run, so a run without it shows a dash, not a zero.
 Cell deviation_cell(double DeviationStats::*field, int decimals, bool percent) {
   return [field, decimals, percent](const Evaluation& e) {
     if (!e.has_deviation) return std::string("-");
@@ -59,7 +59,7 @@ Cell deviation_cell(double DeviationStats::*field, int decimals, bool percent) {
   };
 }
 
-// --no-occlusion leaves the occlusion fields at zero: a dash says "not measured", 0.0 would
+// --no-occlusion leaves the occlusion fields at zero. A dash says "not measured" where 0.0 would
 // claim a clear screen.
 Cell occlusion_cell(double OcclusionStats::*field) {
   return [field](const Evaluation& e) {

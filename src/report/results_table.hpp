@@ -1,8 +1,8 @@
 #pragma once
-// The comparison's results table, built once from the runs and rendered three ways: the terminal
-// (aligned text with its legend, notes and verdict), the HTML page and CSV. Each column carries
-// its header, unit, legend and formatter, so the terminal and the page cannot print different
-// text for one value: both print the cells built here, formatted by io/number_format.hpp.
+// The comparison's results table, built once from the runs and rendered three ways, for the
+// terminal (aligned text with its legend, notes and verdict), the HTML page and CSV. Each column
+// carries its header, unit, legend and formatter, and the terminal and the page both print the
+// cells built here (formatted by io/number_format.hpp), so they cannot differ on one value.
 //
 // The table is the reader's view (rounded, units in the headers); summary.csv
 // (metrics/run_summary.hpp's field table) stays the exact, complete record of a run.
@@ -18,7 +18,7 @@
 
 namespace fragsim {
 
-// What follows a column's legend entry: the terminal legend groups related entries with commas,
+// What follows a column's legend entry. The terminal legend groups related entries with commas,
 // separates groups with semicolons and breaks its lines after some groups.
 enum class LegendBreak { comma, semicolon, line };
 
@@ -26,32 +26,32 @@ enum class LegendBreak { comma, semicolon, line };
 struct ResultsColumn {
   std::string header{};       // "dev_mean"
   std::string unit{};         // "m", "%", "N s"; empty for counts and names
-  std::string parts{};        // for a cell of several counts: what each is, "T/B/L/R/N/S"
+  std::string parts{};        // for a cell of several counts, what each is ("T/B/L/R/N/S")
   std::string explanation{};  // what it counts, in a sentence (the page's tooltip)
   std::string legend_key{};   // the legend's name for it ("dev" for the three deviation columns)
-  std::string legend{};       // empty: the column has no legend entry of its own
+  std::string legend{};       // empty if the column has no legend entry of its own
   LegendBreak legend_break = LegendBreak::semicolon;
-  bool timing = false;  // wall-clock: differs between runs, so never on the page or in table.csv
-  // false: on the page and in table.csv only, a detail the terminal's width has no room for (its
-  // tooltip explains it; it has no legend entry).
+  bool timing = false;  // wall-clock, differs between runs, so never on the page or in table.csv
+  // If false, on the page and in table.csv only, a detail the terminal's width has no room for
+  // (its tooltip explains it; it has no legend entry).
   bool terminal = true;
   std::function<std::string(const Evaluation&)> cell{};
 };
 
-// The one-line header the terminal and CSV print: the unit joined by '_' without its spaces
+// The one-line header the terminal and CSV print, the unit joined by '_' without its spaces
 // ("dev_mean_m", "impulse_Ns"), the parts after a space ("exits T/B/L/R/N/S").
 std::string column_title(const ResultsColumn& column);
 
 // A remark below the table, about one run (strategy-specific numbers, warnings) or all of them.
 struct ResultsNote {
-  std::string text;  // no final full stop: the page adds its own punctuation
+  std::string text;  // no final full stop, as the page adds its own punctuation
   bool timing = false;
 };
 
 struct ResultsTable {
   std::string scene_name;
   std::string caption;  // "1728 fragments, 180 steps of 0.01667 s, seed 1, ODE 0.16.2"
-  // About the scene, under the caption: a camera track that does not cover the run.
+  // About the scene, under the caption (a camera track that does not cover the run).
   std::vector<std::string> warnings;
   std::vector<ResultsColumn> columns;
   std::vector<std::vector<std::string>> rows;  // a row per run, a cell per column
@@ -64,12 +64,12 @@ struct ResultsTable {
 // distance, which the legend states.
 std::vector<ResultsColumn> results_columns(double near_miss_m);
 
-// Notes come from the runs' numbers, never from strategy names: a run that pulled the near plane
+// Notes come from the runs' numbers, never from strategy names. A run that pulled the near plane
 // in gets the depth-resolution note, a run with wall contacts gets their count, whatever its
 // strategy is called.
 ResultsTable results_table(const Scene& scene, const std::vector<Evaluation>& runs);
 
-// The terminal's report: "scene NAME: caption", a "warning: " line per warning, the aligned
+// The terminal's report has "scene NAME: caption", a "warning: " line per warning, the aligned
 // table, the legend, the notes and the verdict.
 std::string results_text(const ResultsTable& table);
 

@@ -25,12 +25,12 @@ constexpr double kLegendSamplePx = 22.0;
 constexpr double kThinnestPx = 1.25;
 constexpr double kWidthStepPx = 0.5;
 
-// Pixel coordinates: two decimals are far below a pixel and keep the text short.
+// Two decimals for pixel coordinates are far below a pixel and keep the text short.
 std::string px(double v) {
   return fixed_text(v, 2);
 }
 
-// Decimals that tell ticks `step` apart: 0 for 1, 2, 5, 10; 1 for 0.5; 2 for 0.02.
+// Decimals that tell ticks `step` apart (0 for 1, 2, 5, 10; 1 for 0.5; 2 for 0.02).
 int tick_decimals(double step) {
   return std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
 }
@@ -58,9 +58,9 @@ std::pair<double, double> span_with_zero(const LineChart& chart, bool x_axis) {
   return {lo, hi};
 }
 
-// The path of one series: M at the start and after every gap, L elsewhere. Points in the middle
-// of a flat run are left out (they lie on the line between its ends), which shortens the long
-// zero runs of the count series a lot.
+// The path of one series has M at the start and after every gap, L elsewhere. Points in the middle
+// of a flat run are left out (they lie on the line between its ends), which much shortens the
+// long zero runs of the count series.
 std::string series_path(const ChartFrame& frame, const std::vector<double>& x,
                         const std::vector<double>& y) {
   std::string d;

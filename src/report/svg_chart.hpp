@@ -1,6 +1,6 @@
 #pragma once
-// A line chart as inline SVG text, for the HTML report: one line per series over a shared x,
-// axes with ticks at 1-2-5 steps and labels, a legend on the right. Numbers are written with
+// A line chart as inline SVG text for the HTML report: one line per series over a shared x, axes
+// with ticks at 1-2-5 steps and labels, and a legend on the right. Numbers are written with
 // std::to_chars, so the same data gives the same bytes on every platform (the report is compared
 // byte for byte).
 
@@ -16,8 +16,8 @@ struct ChartSeries {
 
 struct LineChart {
   std::string title;
-  std::string x_label;    // with its unit: "t (s)"
-  std::string y_label;    // with its unit: "screen covered (%)"
+  std::string x_label;    // with its unit, "t (s)"
+  std::string y_label;    // with its unit, "screen covered (%)"
   std::vector<double> x;  // shared by every series, increasing
   std::vector<ChartSeries> series;
 };

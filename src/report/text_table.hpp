@@ -1,7 +1,7 @@
 #pragma once
 // A plain-text table with aligned columns, as the terminal shows it: the header, a rule of dashes
-// under each column, then the rows. The first column (a name) is left-aligned, the others
-// (numbers) right-aligned, two spaces apart.
+// under each column, then the rows. The first column (a name) is left-aligned, the others (numbers)
+// right-aligned, two spaces apart.
 
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// `deflect-all`'s scene keys ([deflect-all]): the library's DeflectAllParams as text, each
+// `deflect-all`'s scene keys ([deflect-all]) are the library's DeflectAllParams as text, each
 // number's range the library's (kDeflectAllRanges).
 
 #include "control/strategies/deflect_all_params.hpp"

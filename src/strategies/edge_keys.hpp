@@ -1,5 +1,5 @@
 #pragma once
-// `edge`'s scene keys ([edge]): the library's EdgeParams as text, each number's range the
+// `edge`'s scene keys ([edge]) are the library's EdgeParams as text, each number's range the
 // library's (kEdgeRanges).
 
 #include "control/strategies/edge_params.hpp"

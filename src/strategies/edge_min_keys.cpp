@@ -13,7 +13,7 @@
 namespace fragsim {
 namespace {
 
-// The edge weights' rule: each finite and in the library's range, not all zero.
+// Each edge weight must be finite and in the library's range, not all zero.
 std::optional<std::string> edge_weights_rule(const std::array<double, 4>& w) {
   const ParamRange& each = library_range(kEdgeMinRanges, "edge_weights");
   for (double v : w) {
@@ -24,7 +24,7 @@ std::optional<std::string> edge_weights_rule(const std::array<double, 4>& w) {
   return std::nullopt;
 }
 
-// 'top bottom left right': four weights, the key's own type (no other key has four numbers).
+// 'top bottom left right' holds four weights, the key's own type (no other key has four numbers).
 settings::Key<EdgeMinParams> edge_weights_key() {
   using P = EdgeMinParams;
   return {"edge_weights",

@@ -1,5 +1,5 @@
 #pragma once
-// `edge-min`'s scene keys ([edge-min]): the library's EdgeMinParams as text, each number's range
+// `edge-min`'s scene keys ([edge-min]) are the library's EdgeMinParams as text, each number's range
 // the library's (kEdgeMinRanges).
 
 #include "control/strategies/edge_min_params.hpp"

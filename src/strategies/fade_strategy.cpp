@@ -20,7 +20,7 @@ float fade_opacity(const FadeParams& p, double distance_m) {
 }
 
 void FadeStrategy::step(const StepContext& ctx, SceneStepOutput& out) {
-  // The opacity is the next frame's, the one the state after this step is drawn with: fragments
+  // The opacity is the next frame's, the one the state after this step is drawn with, so fragments
   // and camera moved on as the physics will move them (semi-implicit Euler, no force, the
   // rotation kept), as near-plane chooses its near distance. Only contacts make it differ.
   const Eigen::Vector3d eye = ctx.camera.eye_m + ctx.camera_velocity_mps * ctx.dt_s;

@@ -6,7 +6,7 @@
 namespace fragsim {
 
 void NearPlaneStrategy::step(const StepContext& ctx, SceneStepOutput& out) {
-  // The near plane chosen now is the one the next frame is drawn with: look at where the
+  // The near plane chosen is the one the next frame is drawn with, so it looks at where the
   // fragments and the camera will be after this step (semi-implicit Euler, as the physics does).
   CameraPose next = ctx.camera;
   next.eye_m += ctx.camera_velocity_mps * ctx.dt_s;
@@ -17,7 +17,7 @@ void NearPlaneStrategy::step(const StepContext& ctx, SceneStepOutput& out) {
       const Eigen::Vector3d c = next.to_camera(p);
       const double front_m = c.z() - f.radius_m;  // nearest depth of its bounding sphere
       if (front_m >= nearest_m + params_.margin_m) continue;
-      if (c.z() + f.radius_m <= 0.0) continue;  // wholly behind the eye: not drawn
+      if (c.z() + f.radius_m <= 0.0) continue;  // wholly behind the eye, so not drawn
       // Only fragments that reach into the frustum's opening near the eye matter.
       const double depth_m = std::max(front_m, 0.0);
       if (std::abs(c.x()) > next.half_width_at(depth_m) + f.radius_m) continue;

@@ -1,6 +1,6 @@
 #pragma once
-// `near-plane`: leaves the physics alone and pulls the near plane toward the eye, down to a
-// minimum, so that approaching fragments are not cut (thesis fig. 2.6). The cost is depth
+// `near-plane` leaves the physics alone and pulls the near plane toward the eye, down to a
+// minimum, so approaching fragments are not cut (thesis fig. 2.6). The cost is depth
 // precision, reported as the depth step at a reference distance (geometry/depth_buffer.hpp).
 
 #include "strategies/near_plane_params.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// `none`: no control. The reference run against which deviation is measured.
+// `none` applies no control and is the reference run for deviation.
 
 #include "strategies/scene_strategy.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Scene keys whose rule is a range the library states (strategies/param_range.hpp): the keys of
+// Scene keys whose rule is a range the library states (strategies/param_range.hpp). The keys of
 // the library's strategies take each number's legal values from the library's own table, so a
 // scene file and a game's def refuse the same values. Only the text (name, unit, help) is the
 // tool's.
@@ -15,13 +15,13 @@
 namespace fragsim {
 
 // The range named `name`; throws std::logic_error when `ranges` has none (a key the library does
-// not know of: a slip in the tool's table, which tests/strategies/range_keys_test.cpp finds).
+// not know of, a slip in the tool's table, which tests/strategies/range_keys_test.cpp finds).
 const ParamRange& library_range(std::span<const ParamRange> ranges, std::string_view name);
 
-// The interval of `range` as a key's rule (its +inf, if allowed, is the key's kind: real_or_inf).
+// The interval of `range` as a key's rule (its +inf, if allowed, is the key's kind real_or_inf).
 settings::Range key_range(const ParamRange& range);
 
-// A number key named `name`, its rule the library's range of that name: real, or real_or_inf
+// A number key named `name`, its rule the library's range of that name, real or real_or_inf
 // when the range allows +inf.
 template <class Owner>
 settings::Key<Owner> ranged_real(std::span<const ParamRange> ranges, const char* name,

@@ -1,9 +1,9 @@
 #pragma once
-// Strategies by name: one table, one entry per strategy with its name, what it does, its
+// Strategies by name, in one table, an entry per strategy with its name, what it does, its
 // parameters' keys and how to make it. The scene parser, --help, config.ini, the --strategy lists
 // and the parameters' validation all read the table, so adding a strategy is its own files and
 // one entry. The registry knows nothing of the scene or the simulation (the strategies are the
-// bottom layer): the simulation hands it the settings (sim/scene_strategies.hpp makes them).
+// bottom layer), so the simulation hands it the settings (sim/scene_strategies.hpp makes them).
 
 #include <functional>
 #include <memory>
@@ -19,12 +19,12 @@
 namespace fragsim {
 
 struct StrategyEntry {
-  std::string name;                       // also its scene section: [edge-min], --edge-min.margin_m
+  std::string name;                       // also its scene section, [edge-min], --edge-min.margin_m
   std::string description;                // one line for --help
   settings::Keys<StrategySettings> keys;  // named "section.key"
   // The keys' rules on the values held (set in code or parsed), then the rules across keys.
   std::function<void(const StrategySettings&, const FrustumDef&)> check;
-  // Only the rules across keys: the parser has already checked each value against its key.
+  // Only the rules across keys, as the parser has already checked each value against its key.
   std::function<void(const StrategySettings&, const FrustumDef&)> check_across;
   std::function<std::unique_ptr<SceneStrategy>(const StrategySettings&, const FrustumDef&)> make;
   std::vector<TuningVariant> tuning;  // what the time-against-error bench tries (ParamSpec)
@@ -80,16 +80,16 @@ const std::vector<std::string>& strategy_names();
 // The names joined by `separator` ("none | wall | ...", "none,wall,...").
 std::string join_strategy_names(const StrategyTable& table, std::string_view separator);
 
-// For --help: one line per strategy, its name and what it does.
+// For --help, one line per strategy with its name and what it does.
 std::string describe_strategies(const StrategyTable& table);
 
 // The entry named `name`; nullptr when there is none.
 const StrategyEntry* find_strategy(std::string_view name,
                                    const StrategyTable& table = strategy_table());
 
-// Whether the named strategy can be made with these parameters, without making it: its keys'
-// rules on the values held, then its rules across keys and with the frustum. Throws InputError
-// naming the strategy (unknown name) or the parameter and its value, one line.
+// Whether the named strategy can be made with these parameters, without making it (its keys' rules
+// on the values held, then its rules across keys and with the frustum). Throws InputError naming
+// the strategy (unknown name) or the parameter and its value, one line.
 void validate_strategy_settings(std::string_view name, const StrategySettings& settings,
                                 const FrustumDef& camera,
                                 const StrategyTable& table = strategy_table());

@@ -1,10 +1,10 @@
 #pragma once
 // The strategy of a run of the tool. The controller library's strategies (edge-min, edge,
-// deflect-all: strategies/strategy.hpp) answer forces and their activity, all a game asks of
-// them. The tool's baselines answer more: `wall` puts a box in the world, `near-plane` moves the
-// camera's near plane, `fade` draws fragments translucent. Those effects, and the path a strategy
-// predicts with (which the time-against-error bench measures), are the tool's concern and live
-// here; a library strategy runs in the tool through LibraryStrategy.
+// deflect-all; strategies/strategy.hpp) answer forces and their activity, all a game asks of them.
+// The tool's baselines answer more (`wall` puts a box in the world, `near-plane` moves the camera's
+// near plane, `fade` draws fragments translucent). Those effects, and the path a strategy predicts
+// with (which the time-against-error bench measures), are the tool's concern and live here; a
+// library strategy runs in the tool through LibraryStrategy.
 
 #include <memory>
 #include <optional>
@@ -32,12 +32,12 @@ struct WorldNeeds {
   std::optional<CameraWallSpec> camera_wall;
 };
 
-// A strategy's answer in a run of the tool: the library's (forces, activity), and the effects on
+// A strategy's answer in a run of the tool, the library's (forces, activity) and the effects on
 // the camera and the drawing.
 struct SceneStepOutput : StepOutput {
-  std::optional<double> near_m;  // the camera: a near distance other than the scene's
-  // The drawing: each fragment's opacity in the frame after this step, 0 (invisible) to 1; empty:
-  // every fragment opaque, as for every strategy that draws fragments as they are.
+  std::optional<double> near_m;  // a camera near distance other than the scene's
+  // Each fragment's opacity in the frame after this step, 0 (invisible) to 1. Empty means every
+  // fragment is opaque, as for every strategy that draws fragments as they are.
   std::vector<float> opacity;
 
   void clear() {
@@ -61,7 +61,7 @@ class SceneStrategy {
   virtual void step(const StepContext& ctx, SceneStepOutput& out) = 0;
 };
 
-// One of the library's strategies in a run of the tool: its forces and activity, nothing else.
+// One of the library's strategies in a run of the tool, its forces and activity and nothing else.
 class LibraryStrategy final : public SceneStrategy {
  public:
   explicit LibraryStrategy(std::unique_ptr<Strategy> inner,
@@ -91,7 +91,7 @@ class LibraryStrategyRef final : public SceneStrategy {
   Strategy& inner_;
 };
 
-// A strategy as the tool runs it: a SceneStrategy as it is, a library strategy wrapped.
+// A strategy as the tool runs it, a SceneStrategy as it is or a library strategy wrapped.
 template <class S>
 std::unique_ptr<SceneStrategy> as_scene_strategy(std::unique_ptr<S> s) {
   if constexpr (std::is_base_of_v<SceneStrategy, S>) {

@@ -1,5 +1,5 @@
 #pragma once
-// `wall`: a transparent kinematic box carried in front of the camera that fragments bounce off
+// `wall` is a transparent kinematic box carried in front of the camera that fragments bounce off
 // (thesis fig. 2.1). The strategy itself applies no force; the wall lives in the physics world.
 
 #include "strategies/scene_strategy.hpp"

@@ -1,9 +1,9 @@
-/* What JavaScript needs besides the C API to call it: the structs' layouts as this build lays
- * them out, so that the JavaScript wrapper (package/fragsim.mjs) writes and reads every field by
- * its offset and never by a copy of the C declarations; and the calls that take a controller id
- * or return a struct by value, which WebAssembly's C ABI passes through hidden pointers, as calls
- * over plain pointers and integers. Compiled into the module only: nothing here is part of the
- * library. */
+/* What JavaScript needs besides the C API to call it. First, the structs' layouts as this build
+ * lays them out, so the JavaScript wrapper (package/fragsim.mjs) writes and reads every field by
+ * its offset and never by a copy of the C declarations. Second, the calls that take a controller
+ * id or return a struct by value, which WebAssembly's C ABI passes through hidden pointers, as
+ * calls over plain pointers and integers. Compiled into the module only; nothing here is part of
+ * the library. */
 #include <fragsim/control.h>
 #include <stddef.h>
 #include <stdint.h>
