@@ -5,7 +5,7 @@ Usage: check_docs.py ROOT FRAGSIM [--only CHECK,...]
   ROOT     the repository's root
   FRAGSIM  the built fragsim binary (its `compare --help` is the program's key table)
   --only   run only these checks: readme, outside, links, keys, folders, includes, mirror,
-           pages, issues, changelog, offline, hooks, roots
+           pages, issues, changelog, offline, hooks, roots, comments
 
 Fails (exit 1, one line per finding) when:
   readme    README.md is over 200 lines or holds a date or a commit hash;
@@ -22,6 +22,9 @@ Fails (exit 1, one line per finding) when:
             src/control/include/, and tests/ for the tests): a path relative to the including
             file, or the library's files without control/; or a relative path exists under two
             roots; or a CMake file makes src/control an include root again;
+  comments  the comments of the C and C++ files under src/ average more than COMMENT_MAX_COLONS
+            ": " a line (sentences that say why, not "X: Y" chains; Box2D's average 0.06), or a
+            comment tells history (HISTORY_WORDS: the changelog holds it);
   mirror    a source src/D/X.cpp has no test named after it, tests/D/X_test.cpp or
             tests/D/X_<aspect>_test.cpp (src/control/D/ is tested in tests/D/, its api/ in
             tests/control/ or, as C programs, tests/control/api/), unless MIRROR_UNTESTED lists it
@@ -377,6 +380,50 @@ def tracked(root, *patterns):
     out = subprocess.run(["git", "-C", root, "ls-files", "--"] + list(patterns),
                          capture_output=True, text=True, check=True).stdout.split()
     return [f for f in out if os.path.isfile(os.path.join(root, f))]
+
+
+COMMENT_MAX_COLONS = 0.06
+HISTORY_WORDS = re.compile(r"\b(has always|have always|used to|no longer|any ?more|since 0\.\d|"
+                           r"the old (?:one|way|code|check|sum)|before the fix|this round)\b",
+                           re.I)
+
+
+def comment_lines(text):
+    """The comment text of each line of a C or C++ file: // to the line's end, and /* ... */."""
+    out, block = [], False
+    for n, line in enumerate(text.split("\n"), 1):
+        if block:
+            end = line.find("*/")
+            out.append((n, line if end < 0 else line[:end]))
+            block = end < 0
+            continue
+        code = re.sub(r'"(?:\\.|[^"\\])*"', '""', line)  # no // inside a string
+        at = code.find("//")
+        start = code.find("/*")
+        if at >= 0 and (start < 0 or at < start):
+            out.append((n, code[at + 2:]))
+        elif start >= 0:
+            end = code.find("*/", start + 2)
+            out.append((n, code[start + 2:] if end < 0 else code[start + 2:end]))
+            block = end < 0
+    return out
+
+
+def check_comments(root):
+    lines = colons = 0
+    for f in tracked(root, "src"):
+        if not f.endswith((".cpp", ".hpp", ".h", ".c")):
+            continue
+        for n, text in comment_lines(read(os.path.join(root, f))):
+            lines += 1
+            colons += text.count(": ")
+            m = HISTORY_WORDS.search(text)
+            if m:
+                fail("comments", f"{f}:{n}: '{m.group(0)}' tells history; say what holds now "
+                                 "(the changelog keeps the history)")
+    if lines and colons / lines > COMMENT_MAX_COLONS:
+        fail("comments", f"src/ comments average {colons / lines:.3f} ': ' a line, over "
+                         f"{COMMENT_MAX_COLONS}: write sentences, not 'X: Y' chains")
 
 
 def check_roots(root):
@@ -771,6 +818,7 @@ def main(argv):
         "hooks": lambda: check_hooks(root),
         "mirror": lambda: check_mirror(root),
         "roots": lambda: check_roots(root),
+        "comments": lambda: check_comments(root),
     }
     for name in only or checks:
         if name not in checks:
