@@ -376,10 +376,10 @@ def resolve(root, including_dir, target):
     return None
 
 
-def tracked(root, *patterns):
-    out = subprocess.run(["git", "-C", root, "ls-files", "--"] + list(patterns),
-                         capture_output=True, text=True, check=True).stdout.split()
-    return [f for f in out if os.path.isfile(os.path.join(root, f))]
+def tracked_under(root, *folders):
+    """The tracked files under these folders (tracked_files, filtered)."""
+    return [f for f in tracked_files(root) if f.startswith(tuple(d + "/" for d in folders))
+            and os.path.isfile(os.path.join(root, f))]
 
 
 COMMENT_MAX_COLONS = 0.06
@@ -411,7 +411,7 @@ def comment_lines(text):
 
 def check_comments(root):
     lines = colons = 0
-    for f in tracked(root, "src"):
+    for f in tracked_under(root, "src"):
         if not f.endswith((".cpp", ".hpp", ".h", ".c")):
             continue
         for n, text in comment_lines(read(os.path.join(root, f))):
@@ -429,7 +429,7 @@ def check_comments(root):
 def check_roots(root):
     """One spelling per file: every include is the file's path from an include root."""
     quoted = re.compile(r'^\s*#\s*include\s*"([^"]+)"')
-    sources = [f for f in tracked(root, "src", "tests", "bench")
+    sources = [f for f in tracked_under(root, "src", "tests", "bench")
                if f.endswith((".cpp", ".hpp", ".h", ".c"))
                and not f.startswith(("tests/control/include_check/", "tests/control/api/"))]
     for f in sources:
@@ -459,7 +459,7 @@ def check_roots(root):
                 fail("roots", f"{f}:{n}: \"{name}\" is under no include root")
     names = {}
     for r in INCLUDE_ROOTS + ("tests",):
-        for f in tracked(root, r):
+        for f in tracked_under(root, r):
             if not f.endswith((".hpp", ".h")):
                 continue
             rel = os.path.relpath(f, r)
@@ -467,7 +467,7 @@ def check_roots(root):
     for rel, rs in sorted(names.items()):
         if len(rs) > 1:
             fail("roots", f"{rel} is a path under {' and '.join(rs)}: one include path, two files")
-    cmake_files = tracked(root, "CMakeLists.txt", "*CMakeLists.txt", "*.cmake")
+    cmake_files = [f for f in tracked_files(root) if f.endswith(("CMakeLists.txt", ".cmake"))]
     block = re.compile(r"target_include_directories\(([^)]*)\)", re.S)
     for f in cmake_files:
         text = read(os.path.join(root, f))
